@@ -1,0 +1,60 @@
+#pragma once
+// What a case is, as data: the description that travels with its results into every report.
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rodvv::harness {
+
+// A named scalar parameter of a case with its allowed range, settable with `--set NAME=VALUE`.
+struct Parameter {
+  std::string name;
+  double value = 0.0;
+  double min = 0.0;  // allowed range; open or closed at each end
+  double max = 0.0;
+  bool min_open = false;
+  bool max_open = false;
+  std::string unit;
+  std::string description;
+};
+
+// The resolution parameter of a sweep. A StepSize level is the mesh size h itself (dt, a
+// tolerance); a Count level is a number of elements N with h = 1 / N. Orders are fitted in h.
+enum class ResolutionScale { StepSize, Count };
+
+struct Resolution {
+  std::string name;  // "dt", "N", "tol"
+  std::string description;
+  ResolutionScale scale = ResolutionScale::StepSize;
+  std::vector<double> default_levels;   // coarse -> fine; sized so `rodvv run` stays fast
+  std::vector<double> extended_levels;  // a larger sweep behind `--extended`
+
+  double h(double level) const { return scale == ResolutionScale::StepSize ? level : 1.0 / level; }
+};
+
+// Error: |computed - reference|, a convergence quantity. Invariant: a conservation measure whose
+// ideal value is the reference. Diagnostic: reported, not compared (iterations, step counts).
+enum class MetricKind { Error, Invariant, Diagnostic };
+
+struct MetricSpec {
+  std::string name;
+  MetricKind kind = MetricKind::Error;
+  std::string unit;
+  std::string description;
+  bool extrapolate = false;  // Richardson/GCI on the computed value (a smooth solution functional)
+};
+
+struct CaseInfo {
+  std::string name;     // "pendulum/libration-90/stormer-verlet"
+  std::string family;   // "pendulum"
+  std::string title;    // one line for tables
+  std::string physics;  // what is solved, in words and equations
+  std::string reference;  // the closed form or invariant compared against
+  std::string citation;   // where the reference comes from
+  std::string method;     // the solver and its theoretical order
+  std::vector<Parameter> parameters;
+  Resolution resolution;
+  std::vector<MetricSpec> metrics;
+};
+
+}  // namespace rodvv::harness
