@@ -42,11 +42,14 @@ struct MetricSpec {
   std::string unit;
   std::string description;
   bool extrapolate = false;  // Richardson/GCI on the computed value (a smooth solution functional)
+  std::optional<double> theoretical_order;  // expected order of `error` in h (plots, order gates)
 };
 
 struct CaseInfo {
   std::string name;     // "pendulum/libration-90/stormer-verlet"
   std::string family;   // "pendulum"
+  std::string group;    // cases compared side by side in one report section and overlay plot,
+                        // e.g. "pendulum/long-time-energy" (symplectic vs non-symplectic)
   std::string title;    // one line for tables
   std::string physics;  // what is solved, in words and equations
   std::string reference;  // the closed form or invariant compared against

@@ -37,7 +37,9 @@ struct LevelResult {
 };
 
 struct OrderFit {
-  std::vector<double> pairwise;           // p_i = log(e_i / e_{i+1}) / log(h_i / h_{i+1})
+  // p_i = log(e_i / e_{i+1}) / log(h_i / h_{i+1}) between levels i and i+1; NaN where either error
+  // is missing or zero (the one place a NaN is kept, to keep indices aligned; written as null).
+  std::vector<double> pairwise;
   std::optional<double> least_squares;    // slope of log e vs log h over the last levels_used levels
   std::optional<double> r_squared;
   std::size_t levels_used = 0;

@@ -12,9 +12,19 @@
 //   rkn4-mclachlan     [4]  Boost.Odeint symplectic_rkn_sb3a_mclachlan (McLachlan 1995); symplectic
 //
 // Output grid: t_i = i * dt for i = 0 .. n with n = ceil(t_end / dt) (t_i computed as i * dt, never
-// accumulated), so the last recorded time is >= t_end by less than one step. Fixed-step methods step
+// accumulated), so the last recorded time is >= t_end by less than one step. A quotient t_end / dt
+// within 4 ulps of an integer counts as that integer (t_end = 2, dt = 0.02 gives n = 100 whatever
+// the decimal rounding), so there t_n may undershoot t_end by a few ulps. Fixed-step methods step
 // exactly dt; the adaptive method chooses its own steps and samples its dense output on that grid.
 // record_every = k keeps every k-th grid point (and always the first and the last).
+//
+// Bookkeeping: Trajectory.steps = accepted steps (n for the fixed-step methods);
+// rhs_evaluations = force evaluations actually made: explicit/symplectic Euler n, Stoermer-Verlet
+// n + 1 (the end-of-step force is reused), rk4 4n, rkn4-mclachlan 6n (odeint also evaluates the
+// zero-weight last stage), dopri5 1 + 6 per attempted step (FSAL).
+// Failures: a non-finite state throws rodvv::SolverError (step count, |theta| + |theta'|); dopri5
+// also throws when its step size underflows (below 64 eps t_end) or 500 consecutive steps are
+// rejected, reporting the accepted steps and the last normalised error estimate.
 #include <cstddef>
 #include <span>
 #include <string_view>

@@ -1,0 +1,98 @@
+// rodvv: run verification cases of slender-structure solvers against exact references and
+// conservation laws, gate their convergence, and write the validation report.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <exception>
+
+#include "commands.hpp"
+#include "rodvv/common/errors.hpp"
+
+namespace {
+
+constexpr const char* kDescription =
+    "rodvv - verification and validation of slender-structure solvers.\n"
+    "Runs each case at increasing resolution against closed-form references and invariants,\n"
+    "fits observed orders, evaluates pass/fail gates and writes a validation report.\n"
+    "Exit codes: 0 all gates passed, 1 a gate failed, 2 bad input, 3 internal error.";
+
+void add_common(CLI::App* command, rodvv::apps::CommonOptions& common, bool cases_positional) {
+  if (cases_positional)
+    command->add_option("cases", common.cases,
+                        "case names, family or group prefixes (pendulum, pendulum/rotation) or "
+                        "globs ('*/rk4'); default: all");
+  command->add_option("--set", common.assignments,
+                      "override a case parameter, NAME=VALUE (validated against its range); repeatable");
+  command->add_flag("-v,--verbose", common.verbose, "progress per level on stderr");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace rodvv::apps;
+  CLI::App app{kDescription, "rodvv"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "rodvv 0.1.0");
+
+  std::vector<std::string> list_patterns;
+  bool list_verbose = false;
+  auto* list = app.add_subcommand("list", "list the cases (with -v: levels, parameters, gates)");
+  list->add_option("cases", list_patterns, "names, prefixes or globs to filter by");
+  list->add_flag("-v,--verbose", list_verbose, "show levels, parameters and gates");
+
+  RunOptions run_options;
+  auto* run = app.add_subcommand("run", "run cases at their default levels and print the gate table "
+                                        "(the CI gate)");
+  add_common(run, run_options.common, true);
+  run->add_flag("--extended", run_options.common.extended, "use the larger (extended) sweeps");
+  run->add_option("--json", run_options.json_path, "also write the results as JSON (mergeable)");
+  run->add_option("--csv", run_options.csv_path, "also write the results as CSV");
+
+  SweepOptions sweep_options;
+  sweep_options.common.cases.resize(1);
+  auto* sweep = app.add_subcommand("sweep", "run one case at the given levels and print every level");
+  sweep->add_option("case", sweep_options.common.cases.front(), "exact case name")->required();
+  add_common(sweep, sweep_options.common, false);
+  sweep->add_option("--levels", sweep_options.levels,
+                    "levels coarse to fine, comma separated (dt or tol decreasing, N increasing)")
+      ->delimiter(',')
+      ->required();
+  sweep->add_option("--json", sweep_options.json_path, "also write the results as JSON");
+  sweep->add_option("--csv", sweep_options.csv_path, "also write the results as CSV");
+
+  ReportOptions report_options;
+  auto* report = app.add_subcommand("report", "run every case (or merge results) and write the "
+                                              "validation report: results.json, results.csv, "
+                                              "report.md, index.html with plots, junit.xml");
+  add_common(report, report_options.common, true);
+  report->add_flag("--extended", report_options.common.extended, "use the larger (extended) sweeps");
+  report->add_option("--out", report_options.out_dir, "output directory (default rodvv-report/)");
+  report->add_option("--from", report_options.from_dir,
+                     "merge the JSON files in this directory (from `rodvv run --json`) instead of running");
+  report->add_flag("!--no-plots", report_options.plots, "skip the matplotlib plots");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    const int code = app.exit(error);
+    return code == 0 ? kPass : kBadInput;
+  }
+
+  try {
+    if (*list) return list_command(list_patterns, list_verbose);
+    if (*run) return run_command(run_options);
+    if (*sweep) return sweep_command(sweep_options);
+    if (*report) return report_command(report_options);
+  } catch (const rodvv::InputError& error) {
+    fmt::print(stderr, "rodvv: error: {}\n", error.what());
+    return kBadInput;
+  } catch (const rodvv::SolverError& error) {
+    fmt::print(stderr, "rodvv: numerical failure: {}\n", error.what());
+    return kGateFailed;
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "rodvv: internal error: {}\n", error.what());
+    return kInternalError;
+  }
+  return kBadInput;
+}

@@ -1,0 +1,33 @@
+#pragma once
+// The catalogue of every case, and selection of cases by name, family/group prefix or glob.
+#include <span>
+#include <string>
+#include <vector>
+
+#include "rodvv/harness/case.hpp"
+
+namespace rodvv::harness {
+
+class Registry {
+ public:
+  // Throws std::logic_error on a duplicate name (a programming error, not user input).
+  void add(Case c);
+  const std::vector<Case>& cases() const noexcept { return cases_; }
+  const Case* find(std::string_view name) const noexcept;
+
+  // Each pattern selects: the case of that exact name; or every case whose name starts with
+  // "pattern/" (a family or a group); or every case matching it as a shell glob ("*/rk4").
+  // Result in registry order without duplicates; empty patterns select everything. A pattern that
+  // selects nothing throws InputError naming it.
+  std::vector<const Case*> select(std::span<const std::string> patterns) const;
+
+ private:
+  std::vector<Case> cases_;
+};
+
+// Every case rodvv knows, family by family.
+const Registry& default_registry();
+
+void register_pendulum_cases(Registry& registry);
+
+}  // namespace rodvv::harness

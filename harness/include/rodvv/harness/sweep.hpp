@@ -1,0 +1,36 @@
+#pragma once
+// The sweep runner: runs a case at each level (coarse -> fine), times each level, collects the
+// metrics, fits orders, applies Richardson/GCI to extrapolable metrics and evaluates the gates.
+#include <cstddef>
+#include <functional>
+#include <span>
+#include <string>
+
+#include "rodvv/harness/case.hpp"
+
+namespace rodvv::harness {
+
+struct SweepProgress {
+  std::string case_name;
+  std::string resolution_name;
+  std::size_t level_index = 0;  // 0-based
+  std::size_t level_count = 0;
+  double level = 0.0;
+  double seconds = 0.0;  // wall time of that level
+  bool failed = false;
+};
+using ProgressCallback = std::function<void(const SweepProgress&)>;
+
+// Checks that levels are finite, positive, integral for count resolutions, strictly refining
+// (h decreasing) and at least fit_levels many when the case gates an order. Throws InputError.
+void validate_levels(const Case& c, std::span<const double> levels);
+
+// Runs the sweep. InputError from parameters or levels propagates (nothing is run); a SolverError
+// at a level is recorded as that level's failure and the sweep goes on.
+SweepResult run_sweep(const Case& c, const Parameters& parameters, std::span<const double> levels,
+                      const ProgressCallback& progress = {});
+
+// Default levels, or the extended ones when asked (falling back to the defaults if a case has none).
+std::span<const double> sweep_levels(const Case& c, bool extended);
+
+}  // namespace rodvv::harness

@@ -1,0 +1,337 @@
+// The pendulum family (PHYSICS.md §2): every time integrator of solvers/pendulum against the
+// Jacobi-elliptic closed forms of references/pendulum, on five motions, plus the long-time energy
+// behaviour that separates symplectic from non-symplectic integrators.
+//
+// Accuracy cases  pendulum/<motion>/<method>: a sweep over dt (over the tolerance for dopri5).
+//   theta_max_error      max over compared samples of |theta - theta_exact|; order p gated
+//   theta_dot_max_error  the same for theta'
+//   period               mean period from the zero crossings (turns, for rotation) vs 4K(k)/omega
+//   energy_max_deviation max |E - E(0)| along the run
+// Long-time energy cases  pendulum/long-time-energy/<method>: libration at 90 deg over 1000
+//   periods; a bounded energy error (late/early deviation ratio ~ 1) for symplectic methods, a
+//   secular drift (ratio >> 1) for RK4 and explicit Euler.
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
+#include "pendulum_levels.hpp"
+#include "rodvv/harness/registry.hpp"
+#include "rodvv/harness/trajectory_metrics.hpp"
+#include "rodvv/invariants/energy.hpp"
+#include "rodvv/references/pendulum.hpp"
+#include "rodvv/solvers/pendulum/integrators.hpp"
+
+namespace rodvv::harness {
+
+namespace {
+
+namespace ref = rodvv::references;
+namespace pend = rodvv::solvers::pendulum;
+constexpr double kPi = std::numbers::pi;
+
+constexpr const char* kCitation =
+    "Jacobi elliptic closed form: DLMF §22.19(i); Byrd & Friedman, Handbook of Elliptic Integrals "
+    "(1971); evaluated with GSL gsl_sf_elljac_e / gsl_sf_ellint_Kcomp (PHYSICS.md §2)";
+
+enum class MotionKind { Libration, Rotation, Separatrix };
+
+struct Motion {
+  std::string id;
+  MotionKind kind;
+  std::string title;
+  double amplitude;  // theta0 [deg] (libration), v0 (rotation), unused (separatrix)
+  double horizon;    // periods (libration), turns (rotation), t_end (separatrix)
+};
+
+const std::vector<Motion>& motions() {
+  static const std::vector<Motion> list = {
+      {"libration-30", MotionKind::Libration, "libration from rest at 30 deg", 30.0, 2.0},
+      {"libration-90", MotionKind::Libration, "libration from rest at 90 deg", 90.0, 2.0},
+      {"libration-179", MotionKind::Libration, "libration from rest at 179 deg", 179.0, 1.0},
+      {"rotation", MotionKind::Rotation, "rotation with theta'(0) = 3 omega", 3.0, 2.0},
+      {"separatrix", MotionKind::Separatrix, "separatrix, theta'(0) = 2 omega", 0.0, 5.0},
+  };
+  return list;
+}
+
+Parameters motion_parameters(const Motion& motion) {
+  Parameters parameters{make_parameter("omega", 1.0, 0.0, 1e6, true, false, "1/time",
+                                       "natural frequency sqrt(g/l)")};
+  switch (motion.kind) {
+    case MotionKind::Libration:
+      parameters.push_back(make_parameter("theta0_deg", motion.amplitude, 0.0, 180.0, true, true,
+                                          "deg", "release angle (from rest)"));
+      parameters.push_back(make_parameter("periods", motion.horizon, 1.0, 1e4, false, false, "",
+                                          "integration horizon in periods 4K(k)/omega"));
+      break;
+    case MotionKind::Rotation:
+      parameters.push_back(make_parameter("v0_over_omega", motion.amplitude, 2.0, 1e6, true, false, "",
+                                          "initial rate theta'(0) / omega (> 2 for rotation)"));
+      parameters.push_back(make_parameter("turns", motion.horizon, 1.0, 1e4, false, false, "",
+                                          "integration horizon in full turns"));
+      break;
+    case MotionKind::Separatrix:
+      parameters.push_back(make_parameter("t_end", motion.horizon, 0.0, 50.0, true, false,
+                                          "time", "integration horizon"));
+      break;
+  }
+  return parameters;
+}
+
+ref::PendulumMotion reference_motion(const Motion& motion, const Parameters& parameters) {
+  const double omega = parameter_value(parameters, "omega");
+  switch (motion.kind) {
+    case MotionKind::Libration:
+      return ref::Libration{omega, parameter_value(parameters, "theta0_deg") * kPi / 180.0};
+    case MotionKind::Rotation:
+      return ref::Rotation{omega, parameter_value(parameters, "v0_over_omega") * omega};
+    case MotionKind::Separatrix:
+      return ref::Separatrix{omega};
+  }
+  throw std::logic_error("unknown motion kind");
+}
+
+double horizon_time(const Motion& motion, const Parameters& parameters,
+                    const ref::PendulumMotion& exact) {
+  switch (motion.kind) {
+    case MotionKind::Libration: return parameter_value(parameters, "periods") * *ref::period(exact);
+    case MotionKind::Rotation: return parameter_value(parameters, "turns") * *ref::period(exact);
+    case MotionKind::Separatrix: return parameter_value(parameters, "t_end");
+  }
+  throw std::logic_error("unknown motion kind");
+}
+
+std::string motion_reference_text(const Motion& motion) {
+  switch (motion.kind) {
+    case MotionKind::Libration:
+      return "sin(theta/2) = k cd(omega t, k), k = sin(theta0/2); period 4K(k)/omega";
+    case MotionKind::Rotation:
+      return "theta = 2 am(v0 t/2, 2 omega/v0); time per turn 4K(2 omega/v0)/v0";
+    case MotionKind::Separatrix:
+      return "theta = 2 arcsin(tanh(omega t)), theta' = 2 omega sech(omega t)";
+  }
+  return {};
+}
+
+MetricSample error_sample(double computed, double reference) {
+  return {computed, reference, std::abs(computed - reference)};
+}
+
+LevelOutput run_accuracy_level(const Motion& motion, const pend::MethodInfo& method,
+                               const Parameters& parameters, double level) {
+  const ref::PendulumMotion exact = reference_motion(motion, parameters);
+  const ref::PendulumState start = ref::initial_state(exact);
+  const double omega = ref::omega_of(exact);
+  const pend::Problem problem{omega, start.theta, start.theta_dot,
+                              horizon_time(motion, parameters, exact)};
+  pend::Settings settings;
+  settings.method = method.method;
+  if (method.adaptive) {
+    settings.dt = parameter_value(parameters, "output_dt");
+    settings.tolerance = level;
+  } else {
+    settings.dt = level;
+  }
+  const Trajectory trajectory = pend::integrate(problem, settings);
+
+  double theta_error = 0.0, rate_error = 0.0;
+  std::vector<double> times, theta_errors;
+  for (std::size_t i : comparison_indices(trajectory.size())) {
+    const ref::PendulumState expected = ref::exact_state(exact, trajectory.t[i]);
+    const double error = trajectory.theta[i] - expected.theta;
+    theta_error = std::max(theta_error, std::abs(error));
+    rate_error = std::max(rate_error, std::abs(trajectory.theta_dot[i] - expected.theta_dot));
+    times.push_back(trajectory.t[i]);
+    theta_errors.push_back(error);
+  }
+  if (!std::isfinite(theta_error) || !std::isfinite(rate_error))
+    throw SolverError(std::string(method.id), "non-finite error against the reference", trajectory.steps,
+                      theta_error);
+
+  LevelOutput output;
+  output.metrics["theta_max_error"] = {theta_error, 0.0, theta_error};
+  output.metrics["theta_dot_max_error"] = {rate_error, 0.0, rate_error};
+  const auto energy = invariants::pendulum_energy_statistics(trajectory, omega);
+  output.metrics["energy_max_deviation"] = {energy.max_abs_deviation, 0.0, energy.max_abs_deviation};
+
+  if (const auto period = ref::period(exact)) {
+    // Libration crosses theta = 0 twice per period; rotation crosses theta = pi (mod 2 pi) once
+    // per turn.
+    const bool libration = motion.kind == MotionKind::Libration;
+    const auto crossings = crossing_times(trajectory, libration ? 0.0 : kPi, libration ? 0.0 : 2 * kPi);
+    if (const auto measured = period_from_crossings(crossings, libration ? 2.0 : 1.0))
+      output.metrics["period"] = error_sample(*measured, *period);
+  }
+  if (method.adaptive) {
+    output.metrics["error_over_tolerance"] = {theta_error / level, std::nullopt, std::nullopt};
+    output.metrics["rhs_evaluations"] = {static_cast<double>(trajectory.rhs_evaluations),
+                                         std::nullopt, std::nullopt};
+  }
+  output.metrics["steps"] = {static_cast<double>(trajectory.steps), std::nullopt, std::nullopt};
+  output.series.push_back(thin_series("theta_error", "t", "theta - theta_exact [rad]", times, theta_errors));
+  return output;
+}
+
+Case accuracy_case(const Motion& motion, const pend::MethodInfo& method) {
+  Case c;
+  CaseInfo& info = c.info;
+  info.name = fmt::format("pendulum/{}/{}", motion.id, method.id);
+  info.family = "pendulum";
+  info.group = fmt::format("pendulum/{}", motion.id);
+  info.title = fmt::format("{}, {}", motion.title, method.name);
+  info.physics = "Nonlinear pendulum theta'' = -omega^2 sin(theta), the kinetic analogue of the "
+                 "elastica (Kirchhoff); " + motion.title + ".";
+  info.reference = motion_reference_text(motion);
+  info.citation = kCitation;
+  info.method = fmt::format("{} (order {}{}); {}", method.name, method.order,
+                            method.symplectic ? ", symplectic" : "", method.citation);
+  info.parameters = motion_parameters(motion);
+  const LevelPlan plan = pendulum_level_plan(motion.id, method.id);
+  const auto order = static_cast<double>(method.order);
+  if (method.adaptive) {
+    info.parameters.push_back(make_parameter("output_dt", 0.005, 0.0, 1.0, true, false, "time",
+                                             "dense-output sampling interval"));
+    info.resolution = {"tol", "absolute = relative error tolerance of the step-size controller",
+                       ResolutionScale::StepSize, plan.levels, plan.extended_levels};
+  } else {
+    info.resolution = {"dt", "time step", ResolutionScale::StepSize, plan.levels, plan.extended_levels};
+  }
+  const std::optional<double> metric_order =
+      method.adaptive ? std::optional<double>(plan.tolerance_order) : std::optional<double>(order);
+  info.metrics = {
+      {"theta_max_error", MetricKind::Error, "rad", "max |theta - theta_exact| over the compared samples",
+       false, metric_order},
+      {"theta_dot_max_error", MetricKind::Error, "rad/time", "max |theta' - theta'_exact|", false,
+       metric_order},
+      {"energy_max_deviation", MetricKind::Invariant, "omega^2", "max |E(t) - E(0)|", false, metric_order},
+  };
+  if (motion.kind != MotionKind::Separatrix)
+    info.metrics.push_back({"period", MetricKind::Error, "time",
+                            "mean period from the zero crossings (Hermite-located) vs the exact period",
+                            true, metric_order});
+  if (method.adaptive) {
+    info.metrics.push_back({"error_over_tolerance", MetricKind::Diagnostic, "",
+                            "theta_max_error / tol", false, std::nullopt});
+    info.metrics.push_back({"rhs_evaluations", MetricKind::Diagnostic, "", "force evaluations", false,
+                            std::nullopt});
+  }
+  info.metrics.push_back({"steps", MetricKind::Diagnostic, "", "accepted steps", false, std::nullopt});
+
+  if (method.adaptive) {
+    c.gates.push_back(upper_bound_gate("error_over_tolerance", plan.tolerance_ratio_bound,
+                                       GateScope::AllLevels, plan.rationale));
+    c.gates.push_back(order_gate("theta_max_error", plan.tolerance_order,
+                                 "tolerance proportionality of the Dormand-Prince controller: "
+                                 "global error ~ tol (measured, see pendulum_levels.cpp)"));
+  } else {
+    c.gates.push_back(order_gate("theta_max_error", order,
+                                 fmt::format("{} is a method of global order {}", method.name, method.order)));
+    c.gates.push_back(upper_bound_gate("theta_max_error", plan.error_bound, GateScope::FinestLevel,
+                                       plan.rationale));
+  }
+  if (motion.kind != MotionKind::Separatrix) {
+    c.gates.push_back(upper_bound_gate("period", plan.period_bound, GateScope::FinestLevel,
+                                       "period from zero crossings matches 4K(k)/omega; " + plan.rationale));
+  }
+  c.check_parameters = [motion](const Parameters& parameters) {
+    (void)ref::energy(reference_motion(motion, parameters));  // references validate the motion
+  };
+  c.run_level = [motion, method](const Parameters& parameters, double level) {
+    return run_accuracy_level(motion, method, parameters, level);
+  };
+  return c;
+}
+
+// ---- long-time energy ---------------------------------------------------------------------------
+
+LevelOutput run_energy_level(const pend::MethodInfo& method, const Parameters& parameters, double dt) {
+  const ref::Libration exact{parameter_value(parameters, "omega"),
+                             parameter_value(parameters, "theta0_deg") * kPi / 180.0};
+  const double t_end = parameter_value(parameters, "periods") * ref::libration_period(exact);
+  pend::Settings settings;
+  settings.method = method.method;
+  settings.dt = dt;
+  const Trajectory trajectory = pend::integrate({exact.omega, exact.theta0, 0.0, t_end}, settings);
+  const auto stats = invariants::pendulum_energy_statistics(trajectory, exact.omega);
+  const auto history = invariants::pendulum_energy_history(trajectory, exact.omega);
+
+  std::vector<double> deviation(history.size());
+  for (std::size_t i = 0; i < history.size(); ++i) deviation[i] = history[i] - stats.initial;
+  LevelOutput output;
+  output.metrics["energy_max_deviation"] = {stats.max_abs_deviation, 0.0, stats.max_abs_deviation};
+  // late / early deviation: ~1 for a bounded error, ~(t_end / t_early) for a linear drift.
+  const double growth = stats.early_deviation > 0.0 ? stats.late_deviation / stats.early_deviation
+                                                    : std::numeric_limits<double>::infinity();
+  output.metrics["energy_growth_ratio"] = {growth, std::nullopt, std::nullopt};
+  output.metrics["energy_drift_rate"] = {stats.drift_slope, std::nullopt, std::nullopt};
+  output.metrics["steps"] = {static_cast<double>(trajectory.steps), std::nullopt, std::nullopt};
+  output.series.push_back(thin_series("energy_error", "t", "E(t) - E(0)", trajectory.t, deviation));
+  return output;
+}
+
+Case energy_case(const pend::MethodInfo& method) {
+  Case c;
+  CaseInfo& info = c.info;
+  info.name = fmt::format("pendulum/long-time-energy/{}", method.id);
+  info.family = "pendulum";
+  info.group = "pendulum/long-time-energy";
+  info.title = fmt::format("energy over 1000 periods, {}", method.name);
+  info.physics = "Nonlinear pendulum, libration from rest at 90 deg, integrated over 1000 periods.";
+  info.reference = "E = 1/2 theta'^2 - omega^2 cos(theta) is conserved exactly; a symplectic method "
+                   "conserves a modified energy, so E - E(0) stays bounded (Hairer, Lubich & Wanner "
+                   "2006, Thm. IX.8.1); a non-symplectic one drifts secularly.";
+  info.citation = "Hairer, Lubich & Wanner, Geometric Numerical Integration, 2nd ed., Springer 2006, ch. IX";
+  info.method = fmt::format("{} (order {}{})", method.name, method.order,
+                            method.symplectic ? ", symplectic" : ", not symplectic");
+  info.parameters = {
+      make_parameter("omega", 1.0, 0.0, 1e6, true, false, "1/time", "natural frequency"),
+      make_parameter("theta0_deg", 90.0, 0.0, 180.0, true, true, "deg", "release angle"),
+      make_parameter("periods", 1000.0, 10.0, 1e5, false, false, "", "integration horizon in periods"),
+  };
+  const LevelPlan plan = pendulum_level_plan("long-time-energy", method.id);
+  info.resolution = {"dt", "time step", ResolutionScale::StepSize, plan.levels, plan.extended_levels};
+  const auto order = static_cast<double>(method.order);
+  info.metrics = {
+      {"energy_max_deviation", MetricKind::Invariant, "omega^2", "max |E(t) - E(0)| over the run",
+       false, method.symplectic ? std::optional<double>(order) : std::nullopt},
+      {"energy_growth_ratio", MetricKind::Diagnostic, "",
+       "max |E - E(0)| over the last 10% of the run / over the first 10%", false, std::nullopt},
+      {"energy_drift_rate", MetricKind::Diagnostic, "omega^2/time", "least-squares slope dE/dt",
+       false, std::nullopt},
+      {"steps", MetricKind::Diagnostic, "", "steps", false, std::nullopt},
+  };
+  if (method.symplectic) {
+    c.gates.push_back(upper_bound_gate("energy_growth_ratio", plan.growth_bound, GateScope::AllLevels,
+                                       plan.rationale));
+    c.gates.push_back(order_gate("energy_max_deviation", order,
+                                 "a symplectic method of order p keeps |E - E(0)| = O(dt^p) uniformly in time"));
+  } else {
+    c.gates.push_back(lower_bound_gate("energy_growth_ratio", plan.growth_bound, GateScope::AllLevels,
+                                       plan.rationale));
+  }
+  c.check_parameters = [](const Parameters& parameters) {
+    (void)ref::libration_period({parameter_value(parameters, "omega"),
+                                 parameter_value(parameters, "theta0_deg") * kPi / 180.0});
+  };
+  c.run_level = [method](const Parameters& parameters, double level) {
+    return run_energy_level(method, parameters, level);
+  };
+  return c;
+}
+
+}  // namespace
+
+void register_pendulum_cases(Registry& registry) {
+  for (const Motion& motion : motions())
+    for (const pend::MethodInfo& method : pend::all_methods())
+      registry.add(accuracy_case(motion, method));
+  for (const pend::MethodInfo& method : pend::all_methods())
+    if (!method.adaptive) registry.add(energy_case(method));
+}
+
+}  // namespace rodvv::harness

@@ -1,0 +1,135 @@
+#include "rodvv/harness/gate.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+namespace rodvv::harness {
+
+GateSpec order_gate(std::string metric, double theoretical_order, std::string rationale) {
+  GateSpec gate;
+  gate.name = fmt::format("order of {} = {:g}", metric, theoretical_order);
+  gate.kind = GateKind::Order;
+  gate.metric = std::move(metric);
+  gate.lower = theoretical_order - kOrderWindowBelow;
+  gate.upper = theoretical_order + kOrderWindowAbove;
+  gate.rationale = std::move(rationale);
+  return gate;
+}
+
+namespace {
+const char* scope_words(GateScope scope) {
+  return scope == GateScope::AllLevels ? "at every level" : "at the finest level";
+}
+}  // namespace
+
+GateSpec upper_bound_gate(std::string metric, double bound, GateScope scope, std::string rationale) {
+  GateSpec gate;
+  gate.name = fmt::format("{} <= {:.3g} {}", metric, bound, scope_words(scope));
+  gate.kind = GateKind::UpperBound;
+  gate.metric = std::move(metric);
+  gate.upper = bound;
+  gate.scope = scope;
+  gate.rationale = std::move(rationale);
+  return gate;
+}
+
+GateSpec lower_bound_gate(std::string metric, double bound, GateScope scope, std::string rationale) {
+  GateSpec gate;
+  gate.name = fmt::format("{} >= {:.3g} {}", metric, bound, scope_words(scope));
+  gate.kind = GateKind::LowerBound;
+  gate.metric = std::move(metric);
+  gate.lower = bound;
+  gate.scope = scope;
+  gate.rationale = std::move(rationale);
+  return gate;
+}
+
+double gated_value(const MetricSample& sample) { return sample.error ? *sample.error : sample.computed; }
+
+namespace {
+
+GateResult start(const GateSpec& gate) {
+  GateResult result;
+  result.name = gate.name;
+  result.kind = gate.kind;
+  result.metric = gate.metric;
+  result.rationale = gate.rationale;
+  if (std::isfinite(gate.lower)) result.lower = gate.lower;
+  if (std::isfinite(gate.upper)) result.upper = gate.upper;
+  return result;
+}
+
+GateResult evaluate_order(const GateSpec& gate, const SweepResult& sweep) {
+  GateResult result = start(gate);
+  const MetricAnalysis* analysis = nullptr;
+  for (const auto& candidate : sweep.analyses)
+    if (candidate.metric == gate.metric) analysis = &candidate;
+  if (!analysis) {
+    result.reason = fmt::format("no convergence analysis for metric '{}'", gate.metric);
+    return result;
+  }
+  if (!analysis->order.least_squares) {
+    result.reason = fmt::format(
+        "least-squares order of '{}' unavailable: needs {} levels with positive finite errors",
+        gate.metric, std::max<std::size_t>(analysis->order.levels_used, 3));
+    return result;
+  }
+  const double order = *analysis->order.least_squares;
+  result.measured = order;
+  result.passed = order >= gate.lower && order <= gate.upper;
+  result.reason = fmt::format("observed order {:.3f} (R^2 {:.4f}, last {} levels) {} [{:g}, {:g}]",
+                              order, analysis->order.r_squared.value_or(0.0),
+                              analysis->order.levels_used, result.passed ? "in" : "outside",
+                              gate.lower, gate.upper);
+  return result;
+}
+
+GateResult evaluate_bound(const GateSpec& gate, const SweepResult& sweep) {
+  GateResult result = start(gate);
+  const bool upper = gate.kind == GateKind::UpperBound;
+  const double bound = upper ? gate.upper : gate.lower;
+  if (sweep.levels.empty()) {
+    result.reason = "no levels were run";
+    return result;
+  }
+  const std::size_t first = gate.scope == GateScope::AllLevels ? 0 : sweep.levels.size() - 1;
+  // The worst level decides: the largest value for an upper bound, the smallest for a lower one.
+  std::optional<double> worst;
+  double worst_level = 0.0;
+  for (std::size_t i = first; i < sweep.levels.size(); ++i) {
+    const LevelResult& level = sweep.levels[i];
+    const auto found = level.metrics.find(gate.metric);
+    if (level.failure || found == level.metrics.end()) {
+      result.reason = fmt::format("metric '{}' missing at level {:g}{}", gate.metric, level.level,
+                                  level.failure ? " (the level failed: " + *level.failure + ")" : "");
+      return result;
+    }
+    const double value = gated_value(found->second);
+    if (!std::isfinite(value)) {
+      result.measured.reset();
+      result.reason = fmt::format("metric '{}' is not finite at level {:g}", gate.metric, level.level);
+      return result;
+    }
+    if (!worst || (upper ? value > *worst : value < *worst)) {
+      worst = value;
+      worst_level = level.level;
+    }
+  }
+  result.measured = *worst;
+  result.passed = upper ? *worst <= bound : *worst >= bound;
+  result.reason = fmt::format("{} {:.3e} at {} = {:g} {} {} {:.3e}",
+                              gate.scope == GateScope::AllLevels ? "worst value" : "value", *worst,
+                              sweep.info.resolution.name, worst_level,
+                              result.passed ? "within" : "violates", upper ? "<=" : ">=", bound);
+  return result;
+}
+
+}  // namespace
+
+GateResult evaluate_gate(const GateSpec& gate, const SweepResult& sweep) {
+  return gate.kind == GateKind::Order ? evaluate_order(gate, sweep) : evaluate_bound(gate, sweep);
+}
+
+}  // namespace rodvv::harness

@@ -1,0 +1,69 @@
+#include "rodvv/harness/parameters.hpp"
+
+#include <charconv>
+#include <cmath>
+
+#include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
+
+namespace rodvv::harness {
+
+Parameter make_parameter(std::string name, double value, double min, double max, bool min_open,
+                         bool max_open, std::string unit, std::string description) {
+  return Parameter{std::move(name), value, min, max, min_open, max_open, std::move(unit),
+                   std::move(description)};
+}
+
+namespace {
+
+std::string known_names(const Parameters& parameters) {
+  std::string names;
+  for (const auto& parameter : parameters) names += (names.empty() ? "" : ", ") + parameter.name;
+  return names.empty() ? "(none)" : names;
+}
+
+std::size_t index_of(const Parameters& parameters, std::string_view name) {
+  for (std::size_t i = 0; i < parameters.size(); ++i)
+    if (parameters[i].name == name) return i;
+  throw InputError(std::string(name), "unknown parameter '" + std::string(name) +
+                                          "'; this case has: " + known_names(parameters));
+}
+
+}  // namespace
+
+double parameter_value(const Parameters& parameters, std::string_view name) {
+  return parameters[index_of(parameters, name)].value;
+}
+
+std::string describe_range(const Parameter& parameter) {
+  return std::string(parameter.min_open ? "(" : "[") + format_value(parameter.min) + ", " +
+         format_value(parameter.max) + (parameter.max_open ? ")" : "]");
+}
+
+void set_parameter(Parameters& parameters, std::string_view name, double value) {
+  Parameter& parameter = parameters[index_of(parameters, name)];
+  const bool above_min = parameter.min_open ? value > parameter.min : value >= parameter.min;
+  const bool below_max = parameter.max_open ? value < parameter.max : value <= parameter.max;
+  if (!std::isfinite(value) || !above_min || !below_max)
+    throw InputError(parameter.name, "invalid parameter '" + parameter.name + "' = " +
+                                         format_value(value) + ": must be a finite number in " +
+                                         describe_range(parameter));
+  parameter.value = value;
+}
+
+void apply_assignment(Parameters& parameters, std::string_view assignment) {
+  const auto equals = assignment.find('=');
+  if (equals == std::string_view::npos || equals == 0)
+    throw InputError("--set", "malformed --set '" + std::string(assignment) +
+                                  "': expected NAME=VALUE, e.g. theta0_deg=45");
+  const std::string_view name = assignment.substr(0, equals);
+  const std::string_view text = assignment.substr(equals + 1);
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size())
+    throw InputError(std::string(name), "malformed value in --set '" + std::string(assignment) +
+                                            "': '" + std::string(text) + "' is not a number");
+  set_parameter(parameters, name, value);
+}
+
+}  // namespace rodvv::harness

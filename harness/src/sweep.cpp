@@ -1,0 +1,131 @@
+#include "rodvv/harness/sweep.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
+#include "rodvv/harness/order_fit.hpp"
+#include "rodvv/harness/richardson.hpp"
+
+namespace rodvv::harness {
+
+namespace {
+
+bool gates_an_order(const Case& c) {
+  for (const auto& gate : c.gates)
+    if (gate.kind == GateKind::Order) return true;
+  return false;
+}
+
+std::vector<MetricAnalysis> analyse(const Case& c, const std::vector<LevelResult>& levels) {
+  std::vector<MetricAnalysis> analyses;
+  std::vector<double> h;
+  for (const auto& level : levels) h.push_back(level.h);
+  for (const MetricSpec& metric : c.info.metrics) {
+    if (metric.kind == MetricKind::Diagnostic) continue;
+    MetricAnalysis analysis;
+    analysis.metric = metric.name;
+    std::vector<std::optional<double>> errors;
+    for (const auto& level : levels) {
+      const auto found = level.metrics.find(metric.name);
+      errors.push_back(level.failure || found == level.metrics.end() ? std::nullopt
+                                                                      : found->second.error);
+    }
+    analysis.order = fit_order(h, errors, c.fit_levels);
+
+    if (metric.extrapolate) {
+      const std::size_t n = levels.size();
+      if (n < 3) {
+        analysis.richardson_note = "fewer than three levels";
+      } else {
+        const LevelResult& fine = levels[n - 1];
+        const LevelResult& medium = levels[n - 2];
+        const LevelResult& coarse = levels[n - 3];
+        const auto value = [&](const LevelResult& level) -> std::optional<double> {
+          const auto found = level.metrics.find(metric.name);
+          if (level.failure || found == level.metrics.end()) return std::nullopt;
+          return found->second.computed;
+        };
+        if (!value(fine) || !value(medium) || !value(coarse)) {
+          analysis.richardson_note = "a level of the finest three is missing the metric";
+        } else {
+          std::string why_not;
+          analysis.richardson = richardson_gci(
+              {fine.h, medium.h, coarse.h, *value(fine), *value(medium), *value(coarse)}, &why_not);
+          if (!analysis.richardson) analysis.richardson_note = why_not;
+        }
+      }
+    }
+    analyses.push_back(std::move(analysis));
+  }
+  return analyses;
+}
+
+}  // namespace
+
+std::span<const double> sweep_levels(const Case& c, bool extended) {
+  if (extended && !c.info.resolution.extended_levels.empty()) return c.info.resolution.extended_levels;
+  return c.info.resolution.default_levels;
+}
+
+void validate_levels(const Case& c, std::span<const double> levels) {
+  const Resolution& resolution = c.info.resolution;
+  if (levels.empty()) throw InputError("levels", "case '" + c.info.name + "': no levels given");
+  for (double level : levels) {
+    require_positive(resolution.name, level);
+    if (resolution.scale == ResolutionScale::Count && level != std::floor(level))
+      throw InputError(resolution.name, "invalid level " + resolution.name + " = " +
+                                            format_value(level) + ": must be a whole number >= 1");
+  }
+  for (std::size_t i = 1; i < levels.size(); ++i)
+    if (!(resolution.h(levels[i]) < resolution.h(levels[i - 1])))
+      throw InputError("levels", "case '" + c.info.name + "': levels must refine strictly from " +
+                                     "coarse to fine (" + resolution.name + " " +
+                                     (resolution.scale == ResolutionScale::Count ? "increasing"
+                                                                                 : "decreasing") +
+                                     "), but " + format_value(levels[i - 1]) + " is followed by " +
+                                     format_value(levels[i]));
+  if (gates_an_order(c) && levels.size() < c.fit_levels)
+    throw InputError("levels", "case '" + c.info.name + "' gates an observed order, which needs at least " +
+                                   std::to_string(c.fit_levels) + " levels; got " +
+                                   std::to_string(levels.size()));
+}
+
+SweepResult run_sweep(const Case& c, const Parameters& parameters, std::span<const double> levels,
+                      const ProgressCallback& progress) {
+  validate_levels(c, levels);
+  if (c.check_parameters) c.check_parameters(parameters);
+
+  using Clock = std::chrono::steady_clock;
+  const auto sweep_start = Clock::now();
+  SweepResult result;
+  result.info = c.info;
+  result.info.parameters = parameters;
+
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    LevelResult level;
+    level.level = levels[i];
+    level.h = c.info.resolution.h(levels[i]);
+    const auto start = Clock::now();
+    try {
+      LevelOutput output = c.run_level(parameters, levels[i]);
+      level.metrics = std::move(output.metrics);
+      level.series = std::move(output.series);
+    } catch (const SolverError& error) {
+      level.failure = error.what();
+    }
+    level.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (progress)
+      progress({c.info.name, c.info.resolution.name, i, levels.size(), level.level,
+                level.wall_seconds, level.failure.has_value()});
+    result.levels.push_back(std::move(level));
+  }
+
+  result.analyses = analyse(c, result.levels);
+  for (const GateSpec& gate : c.gates) result.gates.push_back(evaluate_gate(gate, result));
+  result.wall_seconds = std::chrono::duration<double>(Clock::now() - sweep_start).count();
+  return result;
+}
+
+}  // namespace rodvv::harness

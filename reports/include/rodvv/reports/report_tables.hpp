@@ -1,0 +1,42 @@
+#pragma once
+// The tables of a report as plain, unescaped text cells, built once and rendered by both
+// markdown.cpp and html.cpp, so the two formats always show the same numbers.
+#include <string>
+#include <vector>
+
+#include "rodvv/reports/report_document.hpp"
+
+namespace rodvv::reports {
+
+enum class CellStyle { Text, Number, Pass, Fail };
+
+struct TableCell {
+  std::string text;
+  CellStyle style = CellStyle::Text;
+};
+
+struct Table {
+  std::vector<std::string> header;
+  std::vector<std::vector<TableCell>> rows;
+  bool empty() const { return rows.empty(); }
+};
+
+// The content of one case section, in display order.
+struct CaseTables {
+  Table metrics;     // declared metrics: name, kind, unit, theoretical order, description
+  Table parameters;  // name, value, unit, allowed range, description
+  Table levels;      // per level: resolution, h, per metric computed/reference/error, wall time
+  Table orders;      // per analysed metric: pairwise orders, least-squares order, R^2, levels used
+  Table richardson;  // Richardson/GCI, only rows of metrics where it was applied (may be empty)
+  std::vector<std::string> richardson_notes;  // "metric: why Richardson was not applied"
+  Table gates;       // gate, kind, metric, measured, window, status, reason, rationale
+};
+
+CaseTables case_tables(const harness::SweepResult& result);
+
+Table summary_table(const ValidationReport& report);  // case, title, levels, gates, status
+Table provenance_table(const ValidationReport& report);
+
+const char* status_text(bool passed);  // "PASS" / "FAIL"
+
+}  // namespace rodvv::reports

@@ -1,0 +1,313 @@
+#!/usr/bin/python3
+"""Plots of a rodvv results.json (schema_version 1), for the HTML report.
+
+    /usr/bin/python3 plot_results.py results.json OUTDIR/plots
+
+Writes into OUTDIR/plots:
+  <case>-convergence.png       log-log error vs h per error metric, least-squares fit, theory
+  <case>-series-<name>.png     every series of the case's finest level
+  group-<group>-<name>.png     a series overlaid across the cases of a group (finest levels)
+  manifest.json                {"cases": {name: [{"file", "caption"}]}, "groups": {...}}
+File names in the manifest are relative to OUTDIR (they start with "plots/").
+
+Exit status: 0 on success, 2 on malformed input, 3 when matplotlib is missing. The last line
+on stderr says why; rodvv shows it in index.html as "plots unavailable: ...".
+Uses only matplotlib (Agg backend) and the standard library; no network.
+"""
+
+import json
+import math
+import os
+import re
+import sys
+
+SCHEMA_VERSION = 1
+DPI = 90
+FIGSIZE = (6.0, 4.0)
+# y spanning more than this many decades (all y != 0) is drawn as |y| on a log axis.
+LOG_DECADES = 3.0
+
+
+class InputProblem(Exception):
+    pass
+
+
+def slugify(text):
+    """The rule of rodvv::reports::slugify: every non-alphanumeric character becomes '-'."""
+    return re.sub(r"[^A-Za-z0-9]", "-", text)
+
+
+def finite(value):
+    return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
+
+
+def need(obj, key, kind, path):
+    if not isinstance(obj, dict):
+        raise InputProblem(f"field '{path}': expected an object")
+    if key not in obj:
+        raise InputProblem(f"field '{path}.{key}' is missing")
+    value = obj[key]
+    if kind is not None and not isinstance(value, kind):
+        raise InputProblem(f"field '{path}.{key}': expected {kind_name(kind)}, "
+                           f"got {type(value).__name__}")
+    return value
+
+
+def kind_name(kind):
+    names = {list: "an array", dict: "an object", str: "a string"}
+    return names.get(kind, getattr(kind, "__name__", str(kind)))
+
+
+def load(path):
+    try:
+        with open(path, encoding="utf-8") as stream:
+            document = json.load(stream)
+    except OSError as error:
+        raise InputProblem(f"cannot open: {error.strerror}") from error
+    except json.JSONDecodeError as error:
+        raise InputProblem(f"not valid JSON: {error}") from error
+    if not isinstance(document, dict):
+        raise InputProblem("expected a JSON object at the top level")
+    version = document.get("schema_version")
+    if version != SCHEMA_VERSION:
+        raise InputProblem(f"field 'schema_version': unsupported version {version!r}, "
+                           f"this script reads {SCHEMA_VERSION}")
+    cases = need(document, "cases", list, "")
+    for i, case in enumerate(cases):
+        path = f"cases[{i}]"
+        info = need(case, "info", dict, path)
+        need(info, "name", str, path + ".info")
+        for j, level in enumerate(need(case, "levels", list, path)):
+            lpath = f"{path}.levels[{j}]"
+            need(level, "metrics", dict, lpath)
+            for k, series in enumerate(need(level, "series", list, lpath)):
+                spath = f"{lpath}.series[{k}]"
+                need(series, "name", str, spath)
+                xs, ys = need(series, "x", list, spath), need(series, "y", list, spath)
+                if len(xs) != len(ys):
+                    raise InputProblem(f"field '{spath}.y': {len(ys)} values but x has {len(xs)}")
+        need(case, "analyses", list, path)
+    return cases
+
+
+class PlotWriter:
+    def __init__(self, plt, outdir):
+        self.plt = plt
+        self.outdir = outdir
+        # Paths in the manifest are relative to the report directory, the parent of outdir.
+        self.prefix = os.path.basename(os.path.normpath(outdir))
+        self.used = set()
+
+    def save(self, fig, stem):
+        name = stem
+        n = 2
+        while name in self.used:  # distinct names may share a slug
+            name = f"{stem}-{n}"
+            n += 1
+        self.used.add(name)
+        fig.savefig(os.path.join(self.outdir, name + ".png"), dpi=DPI)
+        self.plt.close(fig)
+        return f"{self.prefix}/{name}.png"
+
+    def figure(self, title, xlabel, ylabel):
+        fig, ax = self.plt.subplots(figsize=FIGSIZE, layout="constrained")
+        ax.set_title(title, fontsize=9)
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel(ylabel)
+        ax.grid(True, which="both", alpha=0.3)
+        return fig, ax
+
+
+def error_metrics(case):
+    return [m for m in case["info"].get("metrics", []) if m.get("kind") == "error"]
+
+
+def convergence_plot(writer, case):
+    info = case["info"]
+    levels = case["levels"]
+    analyses = {a.get("metric"): a for a in case.get("analyses", []) if isinstance(a, dict)}
+    curves = []
+    for spec in error_metrics(case):
+        points = []
+        for level in levels:
+            sample = level["metrics"].get(spec["name"])
+            h = level.get("h")
+            if isinstance(sample, dict) and finite(sample.get("error")) and sample["error"] > 0 \
+                    and finite(h) and h > 0:
+                points.append((h, sample["error"]))
+        if len(points) >= 2:
+            curves.append((spec, points))
+    if not curves:
+        return None
+    resolution = info.get("resolution", {}).get("name", "")
+    fig, ax = writer.figure(info["name"], "h" + (f"  ({resolution})" if resolution else ""), "error")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    for index, (spec, points) in enumerate(curves):
+        color = f"C{index % 10}"
+        hs = [p[0] for p in points]
+        es = [p[1] for p in points]
+        ax.plot(hs, es, "o-", color=color, label=spec["name"])
+        order = analyses.get(spec["name"], {}).get("order", {})
+        slope = order.get("least_squares")
+        used = order.get("levels_used") or 0
+        if finite(slope) and isinstance(used, int) and used >= 2:
+            # The fit covers the last `used` levels (the finest); its intercept is the mean
+            # offset of those points from the fitted slope.
+            tail = points[-min(used, len(points)):]
+            offset = sum(math.log(e) - slope * math.log(h) for h, e in tail) / len(tail)
+            xs = [tail[0][0], tail[-1][0]]
+            ax.plot(xs, [math.exp(offset) * x ** slope for x in xs], "-", color=color,
+                    linewidth=3, alpha=0.35, label=f"{spec['name']} fit: slope {slope:.2f}")
+        theory = spec.get("theoretical_order")
+        if finite(theory):
+            h_fine, e_fine = min(points, key=lambda p: p[0])
+            xs = [min(hs), max(hs)]
+            ax.plot(xs, [e_fine * (x / h_fine) ** theory for x in xs], "--", color=color,
+                    linewidth=1, label=f"theory: slope {theory:g}")
+    ax.legend(fontsize=7)
+    file = writer.save(fig, slugify(info["name"]) + "-convergence")
+    return {"file": file, "caption": f"{info['name']}: error vs h (log-log) with the least-squares "
+                                     f"fit and the theoretical slope"}
+
+
+def finest_level(case):
+    """The level with series and the smallest h (levels are listed coarse to fine)."""
+    best = None
+    for level in case["levels"]:
+        if not level.get("series"):
+            continue
+        h = level.get("h")
+        if best is None or (finite(h) and (not finite(best.get("h")) or h <= best["h"])):
+            best = level
+    return best
+
+
+def clean_xy(series):
+    xs, ys = [], []
+    for x, y in zip(series["x"], series["y"]):
+        if finite(x) and finite(y):
+            xs.append(x)
+            ys.append(y)
+    return xs, ys
+
+
+def wants_log(all_y):
+    if not all_y or any(y == 0 for y in all_y):
+        return False
+    magnitudes = [abs(y) for y in all_y]
+    return math.log10(max(magnitudes) / min(magnitudes)) > LOG_DECADES
+
+
+def series_plot(writer, case, level, series):
+    xs, ys = clean_xy(series)
+    if not xs:
+        return None
+    name = case["info"]["name"]
+    log = wants_log(ys)
+    ylabel = series.get("y_label") or series["name"]
+    fig, ax = writer.figure(f"{name}\n{series['name']}", series.get("x_label") or "x",
+                            f"|{ylabel}|" if log else ylabel)
+    if log:
+        ax.set_yscale("log")
+        ys = [abs(y) for y in ys]
+    ax.plot(xs, ys, "-", linewidth=1.2)
+    file = writer.save(fig, f"{slugify(name)}-series-{slugify(series['name'])}")
+    h = level.get("h")
+    at = f"h = {h:.4g}" if finite(h) else "finest level"
+    return {"file": file, "caption": f"{series['name']} ({at})" + (", |y| on a log axis" if log
+                                                                        else "")}
+
+
+def legend_label(info):
+    label = info.get("method") or info.get("title") or info["name"]
+    return label if len(label) <= 60 else label[:57] + "..."
+
+
+def group_plot(writer, group, series_name, members):
+    all_y = []
+    for _, series in members:
+        all_y.extend(clean_xy(series)[1])
+    if not all_y:
+        return None
+    log = wants_log(all_y)
+    first = members[0][1]
+    ylabel = first.get("y_label") or series_name
+    fig, ax = writer.figure(f"{group}: {series_name}", first.get("x_label") or "x",
+                            f"|{ylabel}|" if log else ylabel)
+    if log:
+        ax.set_yscale("log")
+    for info, series in members:
+        xs, ys = clean_xy(series)
+        ax.plot(xs, [abs(y) for y in ys] if log else ys, "-", linewidth=1.2,
+                label=legend_label(info))
+    ax.legend(fontsize=7)
+    file = writer.save(fig, f"group-{slugify(group)}-{slugify(series_name)}")
+    names = ", ".join(info["name"] for info, _ in members)
+    return {"file": file, "caption": f"{series_name} across group {group} (finest level of each "
+                                     f"case: {names})"}
+
+
+def main(argv):
+    if len(argv) != 3:
+        print("usage: plot_results.py results.json OUTDIR/plots", file=sys.stderr)
+        return 2
+    results_path, outdir = argv[1], argv[2]
+    try:
+        cases = load(results_path)
+    except InputProblem as problem:
+        print(f"plot_results.py: {results_path}: {problem}", file=sys.stderr)
+        return 2
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError as error:
+        print(f"matplotlib is not available for {sys.executable} ({error})", file=sys.stderr)
+        return 3
+    os.makedirs(outdir, exist_ok=True)
+    writer = PlotWriter(plt, outdir)
+
+    manifest = {"cases": {}, "groups": {}}
+    groups = {}  # group -> series name -> [(info, series)]
+    try:
+        for case in cases:
+            info = case["info"]
+            plots = []
+            entry = convergence_plot(writer, case)
+            if entry:
+                plots.append(entry)
+            level = finest_level(case)
+            if level is not None:
+                seen = set()
+                for series in level["series"]:
+                    if series["name"] in seen:
+                        continue
+                    seen.add(series["name"])
+                    entry = series_plot(writer, case, level, series)
+                    if entry:
+                        plots.append(entry)
+                    group = info.get("group")
+                    if isinstance(group, str) and group:
+                        groups.setdefault(group, {}).setdefault(series["name"], []).append(
+                            (info, series))
+            manifest["cases"][info["name"]] = plots
+        for group, by_series in groups.items():
+            for series_name, members in by_series.items():
+                if len(members) < 2:
+                    continue
+                entry = group_plot(writer, group, series_name, members)
+                if entry:
+                    manifest["groups"].setdefault(group, []).append(entry)
+    except (KeyError, TypeError, ValueError) as error:
+        print(f"plot_results.py: {results_path}: malformed results ({type(error).__name__}: "
+              f"{error})", file=sys.stderr)
+        return 2
+    with open(os.path.join(outdir, "manifest.json"), "w", encoding="utf-8") as stream:
+        json.dump(manifest, stream, indent=2)
+        stream.write("\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

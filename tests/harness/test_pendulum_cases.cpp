@@ -1,0 +1,109 @@
+// The pendulum cases pass at their default levels, and their gates turn red on deliberately wrong
+// solvers (a solver run under another method's gates).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "rodvv/common/errors.hpp"
+#include "rodvv/harness/registry.hpp"
+#include "rodvv/harness/sweep.hpp"
+
+namespace {
+
+using namespace rodvv::harness;
+
+std::vector<std::string> pendulum_case_names() {
+  std::vector<std::string> names;
+  for (const auto& c : default_registry().cases())
+    if (c.info.family == "pendulum") names.push_back(c.info.name);
+  return names;
+}
+
+const Case& named(const std::string& name) {
+  const Case* c = default_registry().find(name);
+  if (!c) throw std::logic_error("no case " + name);
+  return *c;
+}
+
+SweepResult run_default(const Case& c) {
+  return run_sweep(c, c.info.parameters, c.info.resolution.default_levels);
+}
+
+std::string failures(const SweepResult& result) {
+  std::string text;
+  for (const auto& gate : result.gates)
+    if (!gate.passed) text += "\n  " + gate.name + ": " + gate.reason;
+  for (const auto& level : result.levels)
+    if (level.failure) text += "\n  level failed: " + *level.failure;
+  return text;
+}
+
+class PendulumCase : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(PendulumCase, PassesAtDefaultLevels) {
+  const auto result = run_default(named(GetParam()));
+  EXPECT_TRUE(result.passed()) << GetParam() << failures(result);
+  EXPECT_FALSE(result.gates.empty());
+}
+
+std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
+  std::string name;
+  for (char ch : info.param) name += std::isalnum(static_cast<unsigned char>(ch)) ? ch : 'X';
+  return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(AllPendulumCases, PendulumCase, ::testing::ValuesIn(pendulum_case_names()),
+                         test_name);
+
+TEST(PendulumCatalogue, HasEveryMotionAndMethod) {
+  const auto names = pendulum_case_names();
+  // 5 motions x 6 methods + 5 fixed-step methods in the long-time energy group.
+  EXPECT_EQ(names.size(), 35u);
+  for (const auto& c : default_registry().cases()) {
+    EXPECT_GE(c.info.resolution.default_levels.size(), c.fit_levels) << c.info.name;
+    EXPECT_FALSE(c.info.citation.empty()) << c.info.name;
+  }
+}
+
+// A first-order method under a second-order method's gates: the order gate must fail.
+TEST(PendulumGatesHaveTeeth, ExplicitEulerUnderVerletGatesFails) {
+  Case wrong = named("pendulum/libration-90/stormer-verlet");
+  wrong.run_level = named("pendulum/libration-90/explicit-euler").run_level;
+  const auto result = run_default(wrong);
+  EXPECT_FALSE(result.passed());
+  EXPECT_FALSE(result.gates.front().passed) << result.gates.front().reason;
+}
+
+// A fourth-order method under a second-order method's gates: the order is far above the window.
+TEST(PendulumGatesHaveTeeth, Rk4UnderVerletGatesFailsFromAbove) {
+  Case wrong = named("pendulum/libration-90/stormer-verlet");
+  wrong.run_level = named("pendulum/libration-90/rk4").run_level;
+  const auto result = run_default(wrong);
+  ASSERT_TRUE(result.gates.front().measured.has_value());
+  EXPECT_GT(*result.gates.front().measured, 2.5);
+  EXPECT_FALSE(result.passed());
+}
+
+// RK4 drifts: under the symplectic bounded-energy gates it must fail, and Verlet under RK4's
+// "must drift" gate must fail too: the contrast gates both ways.
+TEST(PendulumGatesHaveTeeth, EnergyContrastSeparatesSymplecticFromNot) {
+  Case drifting = named("pendulum/long-time-energy/stormer-verlet");
+  drifting.run_level = named("pendulum/long-time-energy/rk4").run_level;
+  EXPECT_FALSE(run_default(drifting).passed());
+
+  Case bounded = named("pendulum/long-time-energy/rk4");
+  bounded.run_level = named("pendulum/long-time-energy/stormer-verlet").run_level;
+  EXPECT_FALSE(run_default(bounded).passed());
+}
+
+TEST(PendulumCases, RejectInvalidParameters) {
+  const Case& rotation = named("pendulum/rotation/rk4");
+  Parameters parameters = rotation.info.parameters;
+  EXPECT_THROW(apply_assignment(parameters, "v0_over_omega=1.5"), rodvv::InputError);
+  EXPECT_THROW(apply_assignment(parameters, "omega=-1"), rodvv::InputError);
+  Parameters libration = named("pendulum/libration-90/rk4").info.parameters;
+  EXPECT_THROW(apply_assignment(libration, "theta0_deg=180"), rodvv::InputError);
+  EXPECT_THROW(apply_assignment(libration, "periods=0"), rodvv::InputError);
+}
+
+}  // namespace

@@ -1,0 +1,82 @@
+#include <gtest/gtest.h>
+
+#include "rodvv/common/errors.hpp"
+#include "rodvv/harness/registry.hpp"
+#include "rodvv/harness/sweep.hpp"
+#include "rodvv/testing/tolerance.hpp"
+#include "synthetic_case.hpp"
+
+namespace {
+
+using namespace rodvv::harness;
+using rodvv::testing::synthetic_case;
+
+TEST(Sweep, FillsLevelsAnalysesAndRichardson) {
+  Case c = synthetic_case(2.0, 0.5);
+  const auto result = run_sweep(c, c.info.parameters, c.info.resolution.default_levels);
+  ASSERT_EQ(result.levels.size(), 4u);
+  EXPECT_DOUBLE_EQ(result.levels[0].h, 0.1);
+  EXPECT_DOUBLE_EQ(result.levels[0].metrics.at("error").computed, 0.5 * 0.01);
+  ASSERT_EQ(result.analyses.size(), 2u);
+  const auto& value = result.analyses[1];
+  ASSERT_TRUE(value.richardson.has_value()) << value.richardson_note.value_or("");
+  // value = 1 + 0.5 h^2 exactly: the extrapolation recovers 1 to the round-off of the differences.
+  EXPECT_TRUE(rodvv::testing::is_close(value.richardson->extrapolated, 1.0, 1e-12, 0.0));
+  EXPECT_FALSE(result.analyses[0].richardson.has_value());  // not marked extrapolable
+}
+
+TEST(Sweep, CountResolutionFitsInOneOverN) {
+  Case c = synthetic_case(2.0);
+  c.info.resolution = {"N", "elements", ResolutionScale::Count, {8, 16, 32}, {}};
+  c.run_level = [](const Parameters&, double n) {
+    LevelOutput output;
+    output.metrics["error"] = {1.0 / (n * n), 0.0, 1.0 / (n * n)};
+    return output;
+  };
+  c.gates = {order_gate("error", 2.0, "")};
+  const auto result = run_sweep(c, c.info.parameters, c.info.resolution.default_levels);
+  EXPECT_TRUE(result.gates[0].passed) << result.gates[0].reason;
+  EXPECT_DOUBLE_EQ(result.levels[2].h, 1.0 / 32);
+}
+
+TEST(Sweep, RejectsBadLevels) {
+  Case c = synthetic_case(2.0);
+  c.gates = {order_gate("error", 2.0, "")};
+  const std::vector<double> coarsening{0.1, 0.2, 0.05}, too_few{0.1, 0.05}, negative{0.1, -0.05, 0.01},
+      not_a_number{0.1, std::nan(""), 0.01};
+  EXPECT_THROW(validate_levels(c, coarsening), rodvv::InputError);
+  EXPECT_THROW(validate_levels(c, too_few), rodvv::InputError);
+  EXPECT_THROW(validate_levels(c, negative), rodvv::InputError);
+  EXPECT_THROW(validate_levels(c, not_a_number), rodvv::InputError);
+  EXPECT_THROW(validate_levels(c, {}), rodvv::InputError);
+  c.info.resolution.scale = ResolutionScale::Count;
+  const std::vector<double> fractional{8, 16.5, 32};
+  EXPECT_THROW(validate_levels(c, fractional), rodvv::InputError);
+}
+
+TEST(Registry, SelectsByNamePrefixAndGlob) {
+  Registry registry;
+  for (const char* name : {"a/x/one", "a/x/two", "a/y/one", "b/z/one"}) {
+    Case c = synthetic_case(1.0);
+    c.info.name = name;
+    registry.add(c);
+  }
+  const auto names = [&](std::vector<std::string> patterns) {
+    std::vector<std::string> out;
+    for (const Case* c : registry.select(patterns)) out.push_back(c->info.name);
+    return out;
+  };
+  EXPECT_EQ(names({}).size(), 4u);
+  EXPECT_EQ(names({"a/x/one"}), (std::vector<std::string>{"a/x/one"}));
+  EXPECT_EQ(names({"a"}).size(), 3u);
+  EXPECT_EQ(names({"a/x"}).size(), 2u);
+  EXPECT_EQ(names({"*/one"}).size(), 3u);
+  EXPECT_EQ(names({"a/x", "a/x/one"}).size(), 2u);  // no duplicates
+  EXPECT_EQ(names({"a/"}).size(), 3u);
+  EXPECT_THROW(registry.select(std::vector<std::string>{"nope"}), rodvv::InputError);
+  EXPECT_THROW(registry.select(std::vector<std::string>{"a/x/on"}), rodvv::InputError);
+  registry.add(synthetic_case(1.0));
+  EXPECT_THROW(registry.add(synthetic_case(1.0)), std::logic_error);
+}
+
+}  // namespace
