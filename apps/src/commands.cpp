@@ -138,7 +138,7 @@ int report_command(const ReportOptions& options) {
     report = make_report(run_cases(cases, options.common, nullptr));
   }
   reports::WriteOptions write_options;
-  write_options.plots = options.plots;
+  write_options.make_plots = options.plots;
   const auto written = reports::write_report_directory(report, options.out_dir, write_options);
   if (!written.plots_ok) fmt::print(stderr, "warning: {}\n", written.plots_message);
   fmt::print("{}", render_gate_table(report.cases));

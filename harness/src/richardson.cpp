@@ -1,6 +1,9 @@
 #include "rodvv/harness/richardson.hpp"
 
 #include <cmath>
+#include <cstdint>
+
+#include <boost/math/tools/roots.hpp>
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
@@ -28,26 +31,22 @@ std::optional<RichardsonResult> richardson_gci(const RichardsonInput& in, std::s
     return decline("differences between levels vanish (converged to round-off or exact)");
   const double ratio = e32 / e21;
   if (ratio < 0.0) return decline("oscillatory convergence (level differences change sign)");
-  const double s = 1.0;
 
-  // Fixed-point iteration for p (Celik et al. 2008, eqs. 3-5). For r21 = r32, q = 0 and the first
-  // iterate is exact; otherwise it converges in a handful of iterations in the asymptotic range.
-  const double log_ratio = std::log(std::abs(ratio));
-  double p = std::abs(log_ratio) / std::log(r21);
-  bool settled = false;
-  for (int iteration = 0; iteration < 100; ++iteration) {
-    const double q = std::log((std::pow(r21, p) - s) / (std::pow(r32, p) - s));
-    const double next = std::abs(log_ratio + q) / std::log(r21);
-    if (!std::isfinite(next)) return decline("order iteration produced a non-finite value");
-    if (std::abs(next - p) <= 1e-12 * std::max(1.0, std::abs(p))) {
-      p = next;
-      settled = true;
-      break;
-    }
-    p = next;
-  }
-  if (!settled) return decline("order fixed-point iteration did not settle in 100 iterations");
-  if (!(p > 0.0)) return decline("observed order is not positive");
+  // With f = f_exact + C h^p, e32 / e21 = r21^p (r32^p - 1) / (r21^p - 1) =: G(p). Celik's
+  // fixed-point form of this equation can stall for unequal ratios, so solve G(p) = e32/e21 for p
+  // by bracketing (TOMS 748) on p in [1e-3, 30]; log G is increasing in p.
+  const auto residual = [&](double p) {
+    return p * std::log(r21) + std::log(std::expm1(p * std::log(r32))) -
+           std::log(std::expm1(p * std::log(r21))) - std::log(ratio);
+  };
+  constexpr double p_min = 1e-3, p_max = 30.0;
+  if (!(residual(p_min) < 0.0 && residual(p_max) > 0.0))
+    return decline("observed order outside [0.001, 30]: level differences do not fit C h^p");
+  std::uintmax_t iterations = 200;
+  const auto bracket = boost::math::tools::toms748_solve(
+      residual, p_min, p_max, boost::math::tools::eps_tolerance<double>(50), iterations);
+  if (iterations >= 200) return decline("order root-finding did not converge in 200 iterations");
+  const double p = 0.5 * (bracket.first + bracket.second);
 
   RichardsonResult result;
   result.refinement_ratio = r21;

@@ -31,8 +31,12 @@ std::vector<double> pendulum_energy_history(const Trajectory& trajectory, double
   return energy;
 }
 
-EnergyStatistics pendulum_energy_statistics(const Trajectory& trajectory, double omega) {
+EnergyStatistics pendulum_energy_statistics(const Trajectory& trajectory, double omega,
+                                            double window) {
   validate(trajectory, omega);
+  if (!(window > 0.0 && window <= 0.5))
+    throw InputError("window", "invalid parameter 'window' = " + format_value(window) +
+                                   ": must be a finite number in (0, 0.5]");
   const std::size_t n = trajectory.size();
   if (n == 0)
     throw InputError("trajectory", "invalid parameter 'trajectory': empty (needs >= 1 sample)");
@@ -52,8 +56,8 @@ EnergyStatistics pendulum_energy_statistics(const Trajectory& trajectory, double
   // Work with deviations d_i = E_i - E_0: they are small, so the sums below do not lose the drift
   // in the (much larger) mean energy.
   const double span = t[n - 1] - t[0];
-  const double early_end = t[0] + 0.1 * span;
-  const double late_begin = t[n - 1] - 0.1 * span;
+  const double early_end = t[0] + window * span;
+  const double late_begin = t[n - 1] - window * span;
   double t_mean = 0.0;
   double d_mean = 0.0;
   for (std::size_t i = 0; i < n; ++i) {

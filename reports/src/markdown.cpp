@@ -47,7 +47,7 @@ void append_case(std::string& out, const harness::SweepResult& result) {
   const auto& info = result.info;
   out += "#### " + escape_markdown(info.name) + " \u2014 " +
          (result.passed() ? "PASS" : "**FAIL**") + "\n\n";
-  if (!info.title.empty()) out += "*" + escape_markdown(info.title) + "*\n\n";
+  if (!info.title.empty()) out.append("*").append(escape_markdown(info.title)).append("*\n\n");
   append_field(out, "Physics", info.physics);
   append_field(out, "Reference", info.reference);
   append_field(out, "Citation", info.citation);

@@ -30,12 +30,21 @@ std::string gate_number(harness::GateKind kind, const std::optional<double>& val
   return kind == harness::GateKind::Order ? format_order(value) : format_error(value);
 }
 
+// Built by appending: GCC 12 gives a false -Wrestrict for `"literal" + std::string&&`
+// (GCC bug 105651).
 std::string window(const harness::GateResult& g) {
-  if (g.lower && g.upper)
-    return "[" + gate_number(g.kind, g.lower) + ", " + gate_number(g.kind, g.upper) + "]";
-  if (g.lower) return "\u2265 " + gate_number(g.kind, g.lower);
-  if (g.upper) return "\u2264 " + gate_number(g.kind, g.upper);
-  return kNotAvailable;
+  std::string out;
+  if (g.lower && g.upper) {
+    out.append("[").append(gate_number(g.kind, g.lower)).append(", ");
+    out.append(gate_number(g.kind, g.upper)).append("]");
+  } else if (g.lower) {
+    out.append("\u2265 ").append(gate_number(g.kind, g.lower));
+  } else if (g.upper) {
+    out.append("\u2264 ").append(gate_number(g.kind, g.upper));
+  } else {
+    out = kNotAvailable;
+  }
+  return out;
 }
 
 std::string pairwise(const std::vector<double>& orders) {

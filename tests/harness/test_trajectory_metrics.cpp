@@ -30,7 +30,9 @@ TEST(CrossingTimes, HermiteLocationIsFourthOrderAccurate) {
     double error = 0.0;
     for (std::size_t j = 0; j < times.size(); ++j)
       error = std::max(error, std::abs(times[j] - (pi / 2 + double(j) * pi)));
-    if (previous_error > 0.0) EXPECT_GT(previous_error / error, 12.0);  // 2^4 = 16 ideally
+    if (previous_error > 0.0) {
+      EXPECT_GT(previous_error / error, 12.0);  // 2^4 = 16 ideally
+    }
     previous_error = error;
   }
   EXPECT_LT(previous_error, 1e-6);

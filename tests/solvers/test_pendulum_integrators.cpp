@@ -470,7 +470,7 @@ INSTANTIATE_TEST_SUITE_P(AllMethods, PendulumIntegrator,
                                            Method::DormandPrince5, Method::McLachlanRkn4),
                          method_name);
 
-// A million steps is run in the main job: it must finish quickly (about 10 ms measured for
+// A million steps is run in the main job: it must finish quickly (about 20 ms measured for
 // Stoermer-Verlet in Release) and with exact bookkeeping.
 TEST(PendulumIntegratorScale, MillionStepsWithSparseRecording) {
   auto s = settings_for(Method::StormerVerlet, 1e-4);

@@ -1,5 +1,9 @@
 #include "pendulum_levels.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -7,36 +11,117 @@ namespace rodvv::harness {
 
 namespace {
 
-std::vector<double> halvings(double coarsest, int count) {
+// One row per (motion, method). Levels are `count` refinements of `coarsest` by `ratio` (2 for a
+// step, 10 for a tolerance); the extended sweep adds two further refinements (or, where those
+// would reach the round-off floor, two coarser levels in front). Bounds are the value measured at
+// the finest default level times kBoundFactor (measured 2026-11-21, GCC 12 -O3, x86-64): they catch
+// a regression of the error constant by more than that factor, while leaving room for
+// platform-dependent round-off. Order windows are the theory's, never measured.
+constexpr double kBoundFactor = 2.0;
+// No bound below this: accumulated round-off over ~1e4 steps of O(1) quantities (~1e4 eps ~ 2e-12)
+// times a margin of 5, so a bound never sits inside the noise of another platform's libm.
+constexpr double kBoundFloor = 1e-11;
+
+struct Row {
+  const char* motion;
+  const char* method;
+  double coarsest;
+  double measured_error;   // state_max_error at the finest default level
+  double measured_period;  // |period error| at the finest default level (0: no period)
+  double measured_ratio;   // dopri5: max error/tol over the levels; long-time: growth ratio
+  bool finer_extension;    // extended sweep refines further (else: coarser levels in front)
+  const char* order_metric;
+  const char* note;
+};
+
+constexpr int kDefaultCount = 4;
+constexpr const char* kState = "state_max_error";
+constexpr const char* kEnergy = "energy_max_deviation";
+
+// clang-format off
+constexpr Row kRows[] = {
+  // motion           method              coarsest  error     period    ratio  finer  order    note
+  {"libration-30",  "explicit-euler",   4e-3,     1.68e-03, 3.49e-04, 0,         true,  kState, ""},
+  {"libration-30",  "symplectic-euler", 4e-3,     1.29e-04, 5.77e-08, 0,         true,  kState, ""},
+  {"libration-30",  "stormer-verlet",   0.05,     1.09e-05, 1.00e-05, 0,         true,  kState, ""},
+  {"libration-30",  "rk4",              0.1,      1.16e-09, 1.16e-09, 0,         false, kState, ""},
+  {"libration-30",  "rkn4-mclachlan",   0.2,      3.97e-10, 3.96e-10, 0,         false, kState, ""},
+  {"libration-30",  "dopri5",           1e-6,     4.40e-09, 1.42e-09, 5.25e+00,     false, kState, ""},
+  {"libration-90",  "explicit-euler",   4e-3,     9.74e-03, 4.20e-03, 0,         true,  kState, ""},
+  {"libration-90",  "symplectic-euler", 4e-3,     3.54e-04, 1.44e-12, 0,         true,  kState, ""},
+  {"libration-90",  "stormer-verlet",   0.05,     2.38e-05, 8.27e-06, 0,         true,  kState, ""},
+  {"libration-90",  "rk4",              0.025,    7.27e-12, 2.76e-12, 0,         false, kState, ""},
+  {"libration-90",  "rkn4-mclachlan",   0.2,      1.31e-09, 5.00e-10, 0,         false, kState, ""},
+  {"libration-90",  "dopri5",           1e-6,     1.86e-08, 6.72e-09, 2.11e+01,     false, kState, ""},
+  {"libration-179", "explicit-euler",   1e-4,     0,        0,        0,         false, kEnergy,
+   "Near the separatrix the period is ill-conditioned in the energy (dT/dE ~ 2/(1 - E/omega^2) "
+   "~ 1e4 at 179 deg), and explicit Euler's energy error O(dt) turns into a phase error that "
+   "stays O(1) rad down to dt ~ 1e-6 (measured: 2.2 rad at dt = 3.9e-5). The order is gated "
+   "on the energy error, which is cleanly O(dt); the state error is reported, not gated."},
+  {"libration-179", "symplectic-euler", 2e-3,     2.50e-04, 6.38e-08, 0,         true,  kState, ""},
+  {"libration-179", "stormer-verlet",   0.05,     3.42e-05, 2.04e-05, 0,         true,  kState, ""},
+  {"libration-179", "rk4",              0.0125,   1.17e-10, 1.17e-10, 0,         false, kEnergy,
+   "Near the separatrix RK4's h^4 coefficient of the phase error nearly vanishes: the state "
+   "error converges at order 5.0 for dt in [0.003, 0.1] (orders drift from 4 at 120 deg through "
+   "~3 at 170-175 deg to 5 at 178-179.5 deg), until the conditioning floor ~1e-10 is reached "
+   "before the h^4 term dominates. The order is gated on the energy error (measured 4.05), "
+   "the state error and the period by bounds."},
+  {"libration-179", "rkn4-mclachlan",   0.2,      2.54e-09, 1.64e-09, 0,         false, kState, ""},
+  {"libration-179", "dopri5",           1e-6,     1.36e-05, 1.36e-05, 2.33e+04,     false, kState, ""},
+  {"rotation",      "explicit-euler",   4e-3,     1.38e-03, 2.20e-04, 0,         true,  kState, ""},
+  {"rotation",      "symplectic-euler", 4e-3,     2.50e-04, 6.71e-08, 0,         true,  kState, ""},
+  {"rotation",      "stormer-verlet",   0.05,     6.30e-05, 1.05e-05, 0,         true,  kState, ""},
+  {"rotation",      "rk4",              0.05,     2.33e-10, 3.87e-11, 0,         false, kState, ""},
+  {"rotation",      "rkn4-mclachlan",   0.2,      2.70e-09, 4.25e-10, 0,         false, kState, ""},
+  {"rotation",      "dopri5",           1e-6,     2.28e-08, 2.08e-09, 2.41e+01,     false, kState, ""},
+  {"separatrix",    "explicit-euler",   4e-3,     1.75e-02, 0,        0,         true,  kState, ""},
+  {"separatrix",    "symplectic-euler", 4e-3,     2.50e-04, 0,        0,         true,  kState, ""},
+  {"separatrix",    "stormer-verlet",   0.05,     3.42e-04, 0,        0,         true,  kState, ""},
+  {"separatrix",    "rk4",              0.05,     3.41e-10, 0,        0,         false, kState, ""},
+  {"separatrix",    "rkn4-mclachlan",   0.2,      7.12e-09, 0,        0,         false, kState, ""},
+  {"separatrix",    "dopri5",           1e-6,     1.65e-08, 0,        2.90e+01,     false, kState, ""},
+  // Long-time energy, 1000 periods at 90 deg: 3 levels; gates are the contrast thresholds of
+  // pendulum_cases.cpp, no measured bounds.
+  {"long-time-energy", "explicit-euler",   0.01, 0, 0, 0, true,  kEnergy, ""},
+  {"long-time-energy", "symplectic-euler", 0.1,  0, 0, 0, true,  kEnergy, ""},
+  {"long-time-energy", "stormer-verlet",   0.1,  0, 0, 0, true,  kEnergy, ""},
+  {"long-time-energy", "rk4",              0.1,  0, 0, 0, true,  kEnergy, ""},
+  {"long-time-energy", "rkn4-mclachlan",   0.2,  0, 0, 0, true,  kEnergy, ""},
+};
+// clang-format on
+
+std::vector<double> refinements(double coarsest, double ratio, int first, int count) {
   std::vector<double> levels;
-  for (int i = 0; i < count; ++i) levels.push_back(coarsest / double(1 << i));
+  for (int i = first; i < first + count; ++i) levels.push_back(coarsest / std::pow(ratio, i));
   return levels;
 }
 
 }  // namespace
 
 LevelPlan pendulum_level_plan(std::string_view motion, std::string_view method) {
-  // PROVISIONAL: to be replaced by measured levels and bounds.
-  LevelPlan plan;
-  double coarsest = 0.02;
-  if (method == "explicit-euler" || method == "symplectic-euler") coarsest = 4e-3;
-  if (method == "stormer-verlet") coarsest = 0.04;
-  if (method == "rk4" || method == "rkn4-mclachlan") coarsest = 0.2;
-  if (method == "dopri5") coarsest = 1e-6;
-  if (motion == "long-time-energy") coarsest = 0.1;
-  const double ratio = method == "dopri5" ? 10.0 : 2.0;
-  for (int i = 0; i < 6; ++i) {
-    double level = coarsest;
-    for (int j = 0; j < i; ++j) level /= ratio;
-    (i < 4 ? plan.levels : plan.extended_levels).push_back(level);
+  for (const Row& row : kRows) {
+    if (motion != row.motion || method != row.method) continue;
+    const bool long_time = motion == "long-time-energy";
+    const double ratio = method == "dopri5" ? 10.0 : 2.0;
+    const int count = long_time ? 3 : kDefaultCount;
+    LevelPlan plan;
+    plan.levels = refinements(row.coarsest, ratio, 0, count);
+    plan.extended_levels =
+        row.finer_extension ? refinements(row.coarsest, ratio, 0, count + 2) : refinements(row.coarsest, ratio, -2, count + 2);
+    // A measured value of 0 means "not gated by a bound" (see the row's note).
+    const auto bound = [](double measured) {
+      return measured > 0.0 ? std::max(kBoundFactor * measured, kBoundFloor) : 0.0;
+    };
+    plan.error_bound = bound(row.measured_error);
+    plan.period_bound = bound(row.measured_period);
+    plan.tolerance_ratio_bound = kBoundFactor * row.measured_ratio;
+    plan.tolerance_order = 1.0;
+    plan.order_metric = row.order_metric;
+    plan.rationale = fmt::format("bound = {:g} x the value measured at the finest default level", kBoundFactor);
+    if (*row.note) plan.rationale += std::string(". ") + row.note;
+    return plan;
   }
-  (void)halvings;
-  plan.error_bound = 1.0;
-  plan.period_bound = 1.0;
-  plan.tolerance_ratio_bound = 100.0;
-  plan.growth_bound = method == "explicit-euler" || method == "rk4" ? 10.0 : 2.0;
-  plan.rationale = "provisional";
-  return plan;
+  throw std::logic_error(fmt::format("no level plan for pendulum/{}/{}", motion, method));
 }
 
 }  // namespace rodvv::harness

@@ -15,8 +15,8 @@ struct LevelPlan {
   double period_bound = 0.0;            // |period - 4K/omega| at the finest default level
   double tolerance_ratio_bound = 0.0;   // adaptive: theta_max_error / tol at every level
   double tolerance_order = 1.0;         // adaptive: slope of log error vs log tol
-  double growth_bound = 0.0;            // long-time energy: late/early deviation bound
-  std::string rationale;                // how the bounds were derived
+  std::string order_metric = "state_max_error";  // the metric whose order is gated
+  std::string rationale;                // how the bounds were derived, and any exception
 };
 
 // motion: "libration-30", ..., or "long-time-energy"; method: a solvers::pendulum method id.

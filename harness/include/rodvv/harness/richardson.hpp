@@ -4,7 +4,8 @@
 // "Procedure for estimation and reporting of uncertainty due to discretization in CFD
 // applications"), which generalises Roache 1994 (J. Fluids Eng. 116:405) to non-constant ratios:
 //   r21 = h2/h1, r32 = h3/h2, e21 = f2 - f1, e32 = f3 - f2, s = sign(e32/e21)
-//   p   = |ln|e32/e21| + q(p)| / ln r21,   q(p) = ln((r21^p - s) / (r32^p - s))   (fixed point)
+//   p solves e32/e21 = r21^p (r32^p - 1)/(r21^p - 1)   (Celik's eqs. 3-5 for s = 1, solved by
+//   bracketing rather than fixed-point iteration, which can stall for unequal ratios)
 //   f_ext = (r21^p f1 - f2) / (r21^p - 1)
 //   GCI_fine = Fs |(f1 - f2)/f1| / (r21^p - 1),  GCI_coarse = Fs |(f2 - f3)/f2| / (r32^p - 1),
 //   Fs = 1.25 (three-level study); asymptotic range when GCI_coarse / (r21^p GCI_fine) ~ 1.
@@ -24,7 +25,7 @@ struct RichardsonInput {
 };
 
 // Empty (with *why_not set) when the differences vanish, convergence oscillates (s < 0), the
-// fixed point does not settle, or an input is not finite. Throws InputError when the mesh sizes
+// order is not in [0.001, 30], or an input is not finite. Throws InputError when the mesh sizes
 // are not strictly increasing and positive.
 std::optional<RichardsonResult> richardson_gci(const RichardsonInput& input, std::string* why_not);
 
