@@ -26,6 +26,8 @@ std::string render_gate_table(const std::vector<harness::SweepResult>& results) 
                          number(gate.measured), window, gate.passed ? "PASS" : "FAIL");
       if (!gate.passed) out += fmt::format("    reason: {}\n", gate.reason);
     }
+    for (const auto& skipped : result.skipped_gates)
+      out += fmt::format("{:<46} skipped: {}\n", result.info.name, skipped);
     for (const auto& level : result.levels)
       if (level.failure)
         out += fmt::format("{:<46} level {}={:g} failed: {}\n", result.info.name,

@@ -46,6 +46,14 @@ GateSpec lower_bound_gate(std::string metric, double bound, GateScope scope, std
   return gate;
 }
 
+GateSpec scaled_upper_bound_gate(std::string metric, double constant, double order, GateScope scope,
+                                 std::string rationale) {
+  GateSpec gate = upper_bound_gate(std::move(metric), constant, scope, std::move(rationale));
+  gate.name = fmt::format("{} <= {:.3g} h^{:g} {}", gate.metric, constant, order, scope_words(scope));
+  gate.bound_order = order;
+  return gate;
+}
+
 double gated_value(const MetricSample& sample) { return sample.error ? *sample.error : sample.computed; }
 
 namespace {
@@ -89,15 +97,19 @@ GateResult evaluate_order(const GateSpec& gate, const SweepResult& sweep) {
 GateResult evaluate_bound(const GateSpec& gate, const SweepResult& sweep) {
   GateResult result = start(gate);
   const bool upper = gate.kind == GateKind::UpperBound;
-  const double bound = upper ? gate.upper : gate.lower;
+  const double constant = upper ? gate.upper : gate.lower;
+  const auto bound_at = [&](const LevelResult& level) {
+    return gate.bound_order > 0.0 ? constant * std::pow(level.h, gate.bound_order) : constant;
+  };
   if (sweep.levels.empty()) {
     result.reason = "no levels were run";
     return result;
   }
   const std::size_t first = gate.scope == GateScope::AllLevels ? 0 : sweep.levels.size() - 1;
-  // The worst level decides: the largest value for an upper bound, the smallest for a lower one.
+  // The worst level decides: the largest value relative to its bound for an upper bound, the
+  // smallest for a lower one.
   std::optional<double> worst;
-  double worst_level = 0.0;
+  double worst_level = 0.0, worst_bound = 0.0, worst_margin = 0.0;
   for (std::size_t i = first; i < sweep.levels.size(); ++i) {
     const LevelResult& level = sweep.levels[i];
     const auto found = level.metrics.find(gate.metric);
@@ -112,17 +124,22 @@ GateResult evaluate_bound(const GateSpec& gate, const SweepResult& sweep) {
       result.reason = fmt::format("metric '{}' is not finite at level {:g}", gate.metric, level.level);
       return result;
     }
-    if (!worst || (upper ? value > *worst : value < *worst)) {
+    const double bound = bound_at(level);
+    const double margin = upper ? value / bound : bound / value;  // > 1 violates
+    if (!worst || margin > worst_margin) {
       worst = value;
       worst_level = level.level;
+      worst_bound = bound;
+      worst_margin = margin;
     }
   }
   result.measured = *worst;
-  result.passed = upper ? *worst <= bound : *worst >= bound;
+  if (gate.bound_order > 0.0) (upper ? result.upper : result.lower) = worst_bound;
+  result.passed = upper ? *worst <= worst_bound : *worst >= worst_bound;
   result.reason = fmt::format("{} {:.3e} at {} = {:g} {} {} {:.3e}",
                               gate.scope == GateScope::AllLevels ? "worst value" : "value", *worst,
                               sweep.info.resolution.name, worst_level,
-                              result.passed ? "within" : "violates", upper ? "<=" : ">=", bound);
+                              result.passed ? "within" : "violates", upper ? "<=" : ">=", worst_bound);
   return result;
 }
 

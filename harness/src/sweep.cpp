@@ -123,7 +123,16 @@ SweepResult run_sweep(const Case& c, const Parameters& parameters, std::span<con
   }
 
   result.analyses = analyse(c, result.levels);
-  for (const GateSpec& gate : c.gates) result.gates.push_back(evaluate_gate(gate, result));
+  bool at_defaults = parameters.size() == c.info.parameters.size();
+  for (std::size_t i = 0; at_defaults && i < parameters.size(); ++i)
+    at_defaults = parameters[i].name == c.info.parameters[i].name &&
+                  parameters[i].value == c.info.parameters[i].value;
+  for (const GateSpec& gate : c.gates) {
+    if (gate.measured && !at_defaults)
+      result.skipped_gates.push_back(gate.name + ": bound measured at the default parameters");
+    else
+      result.gates.push_back(evaluate_gate(gate, result));
+  }
   result.wall_seconds = std::chrono::duration<double>(Clock::now() - sweep_start).count();
   return result;
 }

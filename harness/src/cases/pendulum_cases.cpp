@@ -202,7 +202,7 @@ Case accuracy_case(const Motion& motion, const pend::MethodInfo& method) {
   info.method = fmt::format("{} (order {}{}); {}", method.name, method.order,
                             method.symplectic ? ", symplectic" : "", method.citation);
   info.parameters = motion_parameters(motion);
-  const LevelPlan plan = pendulum_level_plan(motion.id, method.id);
+  const LevelPlan plan = pendulum_level_plan(motion.id, method.id, method.order);
   const auto order = static_cast<double>(method.order);
   if (method.adaptive) {
     info.parameters.push_back(make_parameter("output_dt", 0.005, 0.0, 1.0, true, false, "time",
@@ -239,6 +239,7 @@ Case accuracy_case(const Motion& motion, const pend::MethodInfo& method) {
   if (method.adaptive) {
     c.gates.push_back(upper_bound_gate("error_over_tolerance", plan.tolerance_ratio_bound,
                                        GateScope::AllLevels, plan.rationale));
+    c.gates.back().measured = true;
     c.gates.push_back(order_gate(plan.order_metric, plan.tolerance_order,
                                  "tolerance proportionality of the Dormand-Prince controller: "
                                  "global error ~ tol"));
@@ -246,13 +247,17 @@ Case accuracy_case(const Motion& motion, const pend::MethodInfo& method) {
     c.gates.push_back(order_gate(plan.order_metric, order,
                                  fmt::format("{} is a method of global order {}{}", method.name,
                                              method.order, state_gated ? "" : "; " + plan.rationale)));
-    if (plan.error_bound > 0.0)
-      c.gates.push_back(upper_bound_gate("state_max_error", plan.error_bound, GateScope::FinestLevel,
-                                         plan.rationale));
   }
-  if (motion.kind != MotionKind::Separatrix && plan.period_bound > 0.0) {
-    c.gates.push_back(upper_bound_gate("period", plan.period_bound, GateScope::FinestLevel,
-                                       "period from zero crossings matches 4K(k)/omega; " + plan.rationale));
+  if (plan.error_constant > 0.0) {
+    c.gates.push_back(scaled_upper_bound_gate("state_max_error", plan.error_constant, plan.error_order,
+                                              GateScope::FinestLevel, plan.rationale));
+    c.gates.back().measured = true;
+  }
+  if (motion.kind != MotionKind::Separatrix && plan.period_constant > 0.0) {
+    c.gates.push_back(scaled_upper_bound_gate(
+        "period", plan.period_constant, plan.period_order, GateScope::FinestLevel,
+        "period from zero crossings matches 4K(k)/omega; " + plan.rationale));
+    c.gates.back().measured = true;
   }
   c.check_parameters = [motion](const Parameters& parameters) {
     (void)ref::energy(reference_motion(motion, parameters));  // references validate the motion
@@ -314,7 +319,7 @@ Case energy_case(const pend::MethodInfo& method) {
       make_parameter("theta0_deg", 90.0, 0.0, 180.0, true, true, "deg", "release angle"),
       make_parameter("periods", 1000.0, 10.0, 1e5, false, false, "", "integration horizon in periods"),
   };
-  const LevelPlan plan = pendulum_level_plan("long-time-energy", method.id);
+  const LevelPlan plan = pendulum_level_plan("long-time-energy", method.id, method.order);
   info.resolution = {"dt", "time step", ResolutionScale::StepSize, plan.levels, plan.extended_levels};
   const auto order = static_cast<double>(method.order);
   info.metrics = {

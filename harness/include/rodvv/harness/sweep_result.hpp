@@ -86,6 +86,9 @@ struct SweepResult {
   std::vector<LevelResult> levels;
   std::vector<MetricAnalysis> analyses;
   std::vector<GateResult> gates;
+  // Gates not evaluated, with the reason: bounds measured at the default parameters, when the
+  // sweep ran at other parameters (`--set`).
+  std::vector<std::string> skipped_gates;
   double wall_seconds = 0.0;
 
   bool passed() const {
