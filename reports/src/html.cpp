@@ -40,9 +40,11 @@ section.case h4{font-size:1.15em;margin:.6em 0 .2em}
 .title{color:#57606a;margin:0 0 .5em}
 dl.info{display:grid;grid-template-columns:max-content 1fr;gap:.2em 1em;margin:.4em 0 .8em}
 dl.info dt{font-weight:600;color:#444}dl.info dd{margin:0}
-figure{display:inline-block;vertical-align:top;margin:.4em 1em .6em 0;max-width:100%}
+.plots{display:flex;flex-wrap:wrap;gap:.6em 1.2em;align-items:flex-start;margin:.4em 0 .8em}
+figure{margin:0;max-width:100%}
 figure img{max-width:100%;border:1px solid #d0d7de;border-radius:4px}
 figcaption{font-size:.82em;color:#57606a;max-width:560px}
+p.skipped{margin:.4em 0 0;font-size:.9em;color:#57606a}
 ul.notes{margin:.2em 0 .8em;font-size:.9em;color:#57606a}
 footer{margin-top:3em;color:#57606a;font-size:.85em}
 )css";
@@ -145,6 +147,11 @@ void append_case(std::string& out, const harness::SweepResult& result, const std
     }
   }
   append_section(out, "Gates", t.gates);
+  if (!t.skipped_gates.empty()) {
+    out += "<p class=\"skipped\">Skipped gates (not evaluated):</p>\n<ul class=\"notes\">\n";
+    for (const auto& s : t.skipped_gates) out += "<li>" + escape_xml(s) + "</li>\n";
+    out += "</ul>\n";
+  }
   if (const auto it = plots.cases.find(info.name); it != plots.cases.end() && !it->second.empty()) {
     out += "<h5>Plots</h5>\n<div class=\"plots\">\n";
     append_figures(out, it->second);
@@ -190,7 +197,9 @@ std::string render_html(const ValidationReport& report, const PlotManifest& plot
   out += "<div class=\"stat\"><b>" + std::to_string(sum.cases_passed) + "</b> / " +
          std::to_string(sum.cases) + " cases passed</div>\n";
   out += "<div class=\"stat\"><b>" + std::to_string(sum.gates_passed) + "</b> / " +
-         std::to_string(sum.gates) + " gates passed</div>\n";
+         std::to_string(sum.gates) + " gates passed" +
+         (sum.gates_skipped ? " (" + std::to_string(sum.gates_skipped) + " skipped)" : "") +
+         "</div>\n";
   out += "<div class=\"stat\"><b>" + std::to_string(sum.levels_failed) + "</b> / " +
          std::to_string(sum.levels) + " levels failed</div>\n";
   out += "<div class=\"stat\">" + escape_xml(report.provenance.date_utc) + "<br>commit " +

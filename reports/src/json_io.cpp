@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <limits>
 #include <map>
 #include <optional>
-#include <sstream>
 #include <system_error>
 
 #include "rodvv/common/errors.hpp"
@@ -455,6 +455,16 @@ harness::SweepResult read_case(const Reader& r, const json& j, const std::string
   const json& gates = r.array(j, path, "gates");
   for (std::size_t i = 0; i < gates.size(); ++i)
     result.gates.push_back(read_gate(r, gates[i], Reader::index(Reader::child(path, "gates"), i)));
+  // Optional: added to the data model after the first files were written.
+  if (const auto it = j.find("skipped_gates"); it != j.end()) {
+    const std::string p = Reader::child(path, "skipped_gates");
+    if (!it->is_array()) r.wrong_type(p, "an array of strings", *it);
+    for (std::size_t i = 0; i < it->size(); ++i) {
+      const json& v = (*it)[i];
+      if (!v.is_string()) r.wrong_type(Reader::index(p, i), "a string", v);
+      result.skipped_gates.push_back(v.get<std::string>());
+    }
+  }
   result.wall_seconds = r.number(j, path, "wall_seconds");
   // "passed" is derived (SweepResult::passed); it is written for jq and dashboards, not read.
   return result;
@@ -480,7 +490,8 @@ json to_json(const harness::SweepResult& result) {
               {"wall_seconds", number(result.wall_seconds)},
               {"levels", levels},
               {"analyses", analyses},
-              {"gates", gates}};
+              {"gates", gates},
+              {"skipped_gates", result.skipped_gates}};
 }
 
 json to_json(const ValidationReport& report) {

@@ -70,6 +70,11 @@ void append_case(std::string& out, const harness::SweepResult& result) {
     out += '\n';
   }
   append_section(out, "Gates", t.gates);
+  if (!t.skipped_gates.empty()) {
+    out += "Skipped gates (not evaluated):\n\n";
+    for (const auto& s : t.skipped_gates) out += "- " + escape_markdown(s) + '\n';
+    out += '\n';
+  }
 }
 
 }  // namespace
@@ -80,7 +85,9 @@ std::string render_markdown(const ValidationReport& report) {
   out += std::string("**Status: ") + status_text(report.passed()) + "** \u2014 " +
          std::to_string(sum.cases_passed) + " of " + std::to_string(sum.cases) +
          " cases passed, " + std::to_string(sum.gates_passed) + " of " +
-         std::to_string(sum.gates) + " gates passed, " + std::to_string(sum.levels_failed) +
+         std::to_string(sum.gates) + " gates passed" +
+         (sum.gates_skipped ? " (" + std::to_string(sum.gates_skipped) + " skipped)" : "") + ", " +
+         std::to_string(sum.levels_failed) +
          " of " + std::to_string(sum.levels) + " levels failed.\n\n";
   out += "## Provenance\n\n";
   append_table(out, provenance_table(report));

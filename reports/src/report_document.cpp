@@ -18,6 +18,7 @@ ReportTotals totals(const ValidationReport& report) {
       ++t.gates;
       if (gate.passed) ++t.gates_passed;
     }
+    t.gates_skipped += result.skipped_gates.size();
     for (const auto& level : result.levels) {
       ++t.levels;
       if (level.failure) ++t.levels_failed;

@@ -151,6 +151,7 @@ CaseTables case_tables(const harness::SweepResult& result) {
     t.gates.rows.push_back({text(g.name), text(harness::to_string(g.kind)), text(g.metric),
                             num(gate_number(g.kind, g.measured)), num(window(g)), status(g.passed),
                             text(g.reason), text(g.rationale)});
+  t.skipped_gates = result.skipped_gates;
   return t;
 }
 
@@ -162,9 +163,12 @@ Table summary_table(const ValidationReport& report) {
     for (const auto& level : result.levels) failed_levels += level.failure ? 1 : 0;
     for (const auto& gate : result.gates) gates_passed += gate.passed ? 1 : 0;
     std::string levels = std::to_string(result.levels.size());
+    std::string gates = std::to_string(gates_passed) + "/" + std::to_string(result.gates.size());
+    if (!result.skipped_gates.empty())
+      gates += " (" + std::to_string(result.skipped_gates.size()) + " skipped)";
     if (failed_levels > 0) levels += " (" + std::to_string(failed_levels) + " failed)";
     t.rows.push_back({text(result.info.name), text(result.info.title), num(levels),
-                      num(std::to_string(gates_passed) + "/" + std::to_string(result.gates.size())),
+                      num(gates),
                       num(format_seconds(result.wall_seconds)), status(result.passed())});
   }
   return t;

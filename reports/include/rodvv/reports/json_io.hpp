@@ -8,7 +8,7 @@
 // the strings of harness::to_string. Unknown fields are ignored, so newer writers stay readable.
 // Malformed input throws rodvv::InputError (parameter "results file") whose message names the
 // source and the field path, e.g.
-//   part.json: field 'cases[3].levels[0].metrics' : expected an object, got a string
+//   part.json: field 'cases[3].levels[0].metrics': expected an object, got a string
 #include <filesystem>
 #include <string_view>
 #include <vector>

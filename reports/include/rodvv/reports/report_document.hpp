@@ -33,6 +33,7 @@ struct ReportTotals {
   std::size_t cases_passed = 0;
   std::size_t gates = 0;
   std::size_t gates_passed = 0;
+  std::size_t gates_skipped = 0;  // SweepResult::skipped_gates (not evaluated, not failed)
   std::size_t levels = 0;
   std::size_t levels_failed = 0;
 };

@@ -30,6 +30,7 @@ struct CaseTables {
   Table richardson;  // Richardson/GCI, only rows of metrics where it was applied (may be empty)
   std::vector<std::string> richardson_notes;  // "metric: why Richardson was not applied"
   Table gates;       // gate, kind, metric, measured, window, status, reason, rationale
+  std::vector<std::string> skipped_gates;  // "gate: why it was not evaluated"
 };
 
 CaseTables case_tables(const harness::SweepResult& result);
