@@ -139,7 +139,9 @@ class PlotWriter:
 
 
 def error_metrics(case):
-    return [m for m in case["info"].get("metrics", []) if m.get("kind") == "error"]
+    # Errors and invariants both converge (an invariant's error is its deviation from the exact
+    # value, e.g. |E - E(0)|); diagnostics have no error to plot.
+    return [m for m in case["info"].get("metrics", []) if m.get("kind") in ("error", "invariant")]
 
 
 def convergence_plot(writer, case, stem):

@@ -131,6 +131,13 @@ int sweep_command(const SweepOptions& options) {
 int report_command(const ReportOptions& options) {
   reports::ValidationReport report;
   if (options.from_dir) {
+    std::error_code ignored;
+    if (std::filesystem::weakly_canonical(*options.from_dir, ignored) ==
+        std::filesystem::weakly_canonical(options.out_dir, ignored))
+      throw InputError("--out", fmt::format("--out '{}' is the --from directory: the merged "
+                                            "results.json would be read back as a part next time; "
+                                            "choose another output directory",
+                                            options.out_dir));
     report = reports::merge_reports(reports::read_reports_from_directory(*options.from_dir));
     fmt::print(stderr, "merged {} cases from {}\n", report.cases.size(), *options.from_dir);
   } else {
