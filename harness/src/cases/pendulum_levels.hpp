@@ -20,7 +20,8 @@ struct LevelPlan {
   double tolerance_ratio_bound = 0.0;   // adaptive: theta_max_error / tol at every level
   double tolerance_order = 1.0;         // adaptive: slope of log error vs log tol
   std::string order_metric = "state_max_error";  // the metric whose order is gated
-  std::string rationale;                // how the bounds were derived, and any exception
+  std::string rationale;                // how the bounds were derived
+  std::string note;                     // why this case departs from the usual gates, if it does
 };
 
 // motion: "libration-30", ..., or "long-time-energy"; method: a solvers::pendulum method id with
