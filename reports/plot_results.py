@@ -5,7 +5,10 @@
 
 Writes into OUTDIR/plots:
   <case>-convergence.png       log-log error vs h per error metric, least-squares fit, theory
-  <case>-series-<name>.png     every series of the case's finest level
+  <case>-series-<name>.png     every series of the case's finest level; series named
+                               "<plot>|<label>" share one figure <plot> with a legend (e.g.
+                               "shape|computed" and "shape|closed form"); a series whose axes are
+                               labelled "x" and "y" is drawn with equal aspect (a rod's shape)
   group-<group>-<name>.png     a series overlaid across the cases of a group (finest levels)
   manifest.json                {"cases": {name: [{"file", "caption"}]}, "groups": {...}}
 File names in the manifest are relative to OUTDIR (they start with "plots/").
@@ -242,25 +245,40 @@ def wants_log(all_y):
     return math.log10(max(magnitudes) / min(magnitudes)) > LOG_DECADES
 
 
-def series_plot(writer, case, level, series, stem):
-    xs, ys = clean_xy(series)
-    if not xs:
+def plot_key(series_name):
+    """"shape|computed" -> ("shape", "computed"); a plain name is its own plot, unlabelled."""
+    key, _, label = series_name.partition("|")
+    return key, label
+
+
+def series_plot(writer, case, level, members, stem):
+    """One figure for the series sharing a plot key (members: list of series dicts)."""
+    curves = [(plot_key(series["name"])[1], *clean_xy(series)) for series in members]
+    curves = [c for c in curves if c[1]]
+    if not curves:
         return None
+    first = members[0]
+    key = plot_key(first["name"])[0]
     name = case["info"]["name"]
-    log = wants_log(ys)
-    ylabel = series.get("y_label") or series["name"]
-    fig, ax = writer.figure(f"{name}\n{series['name']}", series.get("x_label") or "x",
-                            f"|{ylabel}|" if log else ylabel)
+    log = wants_log([y for _, _, ys in curves for y in ys])
+    ylabel = first.get("y_label") or key
+    xlabel = first.get("x_label") or "x"
+    fig, ax = writer.figure(f"{name}\n{key}", xlabel, f"|{ylabel}|" if log else ylabel)
     if log:
         ax.set_yscale("log")
         writer.log_axis(ax.yaxis)
-        ys = [abs(y) for y in ys]
-    ax.plot(xs, ys, "-", linewidth=1.2)
+    if xlabel == "x" and ylabel == "y":
+        ax.set_aspect("equal", adjustable="datalim")
+    styles = ["-", "--", ":", "-."]
+    for i, (label, xs, ys) in enumerate(curves):
+        ax.plot(xs, [abs(y) for y in ys] if log else ys, styles[i % len(styles)], linewidth=1.2,
+                label=label or None)
+    if any(label for label, _, _ in curves):
+        ax.legend(fontsize=7)
     file = writer.save(fig, stem)
     h = level.get("h")
     at = f"h = {h:.4g}" if finite(h) else "finest level"
-    return {"file": file, "caption": f"{series['name']} ({at})" + (", |y| on a log axis" if log
-                                                                        else "")}
+    return {"file": file, "caption": f"{key} ({at})" + (", |y| on a log axis" if log else "")}
 
 
 def legend_label(info):
@@ -303,12 +321,16 @@ def plan(cases):
         stem = unique(slugify(info["name"]))
         series_stems, names = [], UniqueNames()
         level = finest_level(case)
-        seen = set()
+        seen, by_key = set(), {}
         for k, series in enumerate(level["series"] if level else []):
             if series["name"] in seen:
                 continue
             seen.add(series["name"])
-            series_stems.append((k, names(f"{stem}-series-{slugify(series['name'])}")))
+            key = plot_key(series["name"])[0]
+            if key not in by_key:
+                by_key[key] = []
+                series_stems.append((by_key[key], names(f"{stem}-series-{slugify(key)}")))
+            by_key[key].append(k)
             group = info.get("group")
             if isinstance(group, str) and group:
                 overlays.setdefault(group, {}).setdefault(series["name"], []).append(index)
@@ -332,8 +354,9 @@ def run_job(job):
         case = cases[index]
         entries = [convergence_plot(writer, case, convergence_stem)]
         level = finest_level(case)
-        for k, stem in series_stems:
-            entries.append(series_plot(writer, case, level, level["series"][k], stem))
+        for indices, stem in series_stems:
+            entries.append(series_plot(writer, case, level, [level["series"][k] for k in indices],
+                                       stem))
         return [e for e in entries if e]
     _, group, series_name, members, stem = job
     pairs = []
