@@ -54,6 +54,7 @@ const Registry& default_registry() {
   static const Registry registry = [] {
     Registry r;
     register_pendulum_cases(r);
+    register_elastica_cases(r);
     return r;
   }();
   return registry;

@@ -6,7 +6,8 @@
 //    would carry a relative error eps/k'^2 (about 1e-10 at theta0 = 179.9 deg).
 //  * GSL's elljac takes m = k^2 and forms sqrt(1 - m) itself, which re-introduces that error. For
 //    k' < kLandenThreshold we therefore apply the descending Landen (Gauss) transformation
-//    (DLMF 22.7.1-22.7.3), whose new complementary modulus k1' = 2 sqrt(k')/(1 + k') is computed from
+//    (DLMF 22.7.1-22.7.3; detail::jacobi in elliptic.cpp, shared with elastica.cpp), whose new
+//    complementary modulus k1' = 2 sqrt(k')/(1 + k') is computed from
 //    the accurate k', until k' is moderate; only then is GSL called.
 //  * K(k) = R_F(0, k'^2, 1) (DLMF 19.25.1) with the accurate k'^2. This is the same Carlson integral
 //    gsl_sf_ellint_Kcomp evaluates, but Kcomp takes k and recomputes 1 - k^2.
@@ -17,15 +18,10 @@
 //    stays well conditioned at the turning points when theta0 -> pi (asin' -> infinity near 1).
 #include "rodvv/references/pendulum.hpp"
 
-#include <gsl/gsl_mode.h>
-#include <gsl/gsl_sf_elljac.h>
-#include <gsl/gsl_sf_ellint.h>
-#include <gsl/gsl_sf_result.h>
-
 #include <cmath>
 #include <numbers>
 
-#include "gsl_checked.hpp"
+#include "elliptic.hpp"
 #include "rodvv/common/validation.hpp"
 
 namespace rodvv::references {
@@ -33,59 +29,10 @@ namespace {
 
 using std::numbers::pi;
 
-// Below this complementary modulus the Landen transformation is applied before calling GSL. With
-// k' >= 0.5 the error GSL makes in sqrt(1 - m) is at most (eps/2)/k'^2 = 2 eps relative.
-constexpr double kLandenThreshold = 0.5;
-
-struct Jacobi {
-  double sn;
-  double cn;
-  double dn;
-};
-
-// sn, cn, dn(u | m = k^2) given the modulus k and an accurate complementary modulus kp = sqrt(1-k^2).
-Jacobi jacobi(double u, double k, double kp) {
-  if (kp < kLandenThreshold && kp > 0.0) {
-    // Descending Landen transformation, DLMF 22.7.1-22.7.3 (Byrd & Friedman 163.01):
-    //   k1 = (1 - k')/(1 + k'),  sn(u,k) = (1 + k1) sn(v,k1) / (1 + k1 sn^2(v,k1)),  v = u/(1 + k1),
-    //   cn(u,k) = cn(v,k1) dn(v,k1) / (1 + k1 sn^2),   dn(u,k) = (1 - k1 sn^2)/(1 + k1 sn^2).
-    const double one_plus_kp = 1.0 + kp;
-    const double k1 = (1.0 - kp) / one_plus_kp;
-    const double one_minus_k1 = 2.0 * kp / one_plus_kp;  // exact form of 1 - k1: no cancellation
-    const double kp1 = 2.0 * std::sqrt(kp) / one_plus_kp;
-    const Jacobi j = jacobi(u / (1.0 + k1), k1, kp1);
-    const double k1_sn2 = k1 * j.sn * j.sn;
-    const double denominator = 1.0 + k1_sn2;
-    // 1 - k1 sn^2 = (1 - k1) + k1 cn^2: avoids the cancellation where k1 sn^2 -> 1 (dn -> k').
-    return {(1.0 + k1) * j.sn / denominator, j.cn * j.dn / denominator,
-            (one_minus_k1 + k1 * j.cn * j.cn) / denominator};
-  }
-  Jacobi j{};
-  detail::gsl_handler_off();
-  detail::check_gsl(gsl_sf_elljac_e(u, k * k, &j.sn, &j.cn, &j.dn), "gsl_sf_elljac_e");
-  return j;
-}
-
-// Complete elliptic integral K from the complementary modulus: K = R_F(0, k'^2, 1), DLMF 19.25.1.
-double complete_k(double kp) {
-  detail::gsl_handler_off();
-  gsl_sf_result result{};
-  detail::check_gsl(gsl_sf_ellint_RF_e(0.0, kp * kp, 1.0, GSL_PREC_DOUBLE, &result),
-                    "gsl_sf_ellint_RF_e");
-  return result.val;
-}
-
-struct Reduced {
-  double r;      // u - j 2K, |r| <= K (up to rounding)
-  double index;  // j, an integer stored as double (may exceed the range of int for huge t)
-};
-
-// u = j 2K + r with j = floor((u + K)/(2K)); fma makes u - j*2K a single rounding.
-Reduced reduce_half_period(double u, double K) {
-  const double two_k = 2.0 * K;
-  const double j = std::floor((u + K) / two_k);
-  return {std::fma(-j, two_k, u), j};
-}
+using detail::complete_k;
+using detail::jacobi;
+using detail::Jacobi;
+using detail::reduce_half_period;
 
 // Modulus and accurate complementary modulus of the libration, k = sin(theta0/2), k' = cos(theta0/2).
 struct Moduli {

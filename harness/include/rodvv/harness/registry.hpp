@@ -29,5 +29,6 @@ class Registry {
 const Registry& default_registry();
 
 void register_pendulum_cases(Registry& registry);
+void register_elastica_cases(Registry& registry);
 
 }  // namespace rodvv::harness

@@ -1,0 +1,438 @@
+// The planar elastica family (PHYSICS.md §3, §1.3-1.4): the two discretisations of
+// solvers/elastica2d ("polygon", nodal; "arcs", reduced) against the elliptic closed forms of
+// references/elastica, swept over the element count N, with the Noether invariant H(s) along the
+// rod (invariants/planar_noether).
+//
+//   elastica/pinned-pinned-<deg>/<scheme>    column under a dead compressive load P = 4K(k)^2 EI/L^2
+//   elastica/pinned-displacement/<scheme>    the same column with the end shortening imposed: the
+//                                            reaction P is the output
+//   elastica/mattiasson-<alpha>/<scheme>     clamped-free cantilever, vertical dead tip load
+//   elastica/roll-up/<scheme>                cantilever rolled into a full circle by M = 2 pi EI/L
+//   elastica/tapered/<scheme>, elastica/curved/<scheme>
+//                                            H is not conserved when EI or kappa_hat depend on s: the
+//                                            measured H(s) - H(0) must match the predicted integral
+//
+// The solver never sees the reference: loads and supports are the problem's data, the initial
+// guess is a generic first-mode shape whose amplitude follows from the load alone.
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "elastica_levels.hpp"
+#include "rodvv/common/errors.hpp"
+#include "rodvv/harness/registry.hpp"
+#include "rodvv/harness/trajectory_metrics.hpp"
+#include "rodvv/invariants/planar_noether.hpp"
+#include "rodvv/references/elastica.hpp"
+#include "rodvv/solvers/elastica2d/continuation.hpp"
+#include "rodvv/solvers/elastica2d/solve_static.hpp"
+
+namespace rodvv::harness {
+
+namespace {
+
+namespace ref = rodvv::references;
+namespace e2d = rodvv::solvers::elastica2d;
+constexpr double kPi = std::numbers::pi;
+
+constexpr const char* kPinnedCitation =
+    "Inflexional elastica in Jacobi elliptic functions: Love, Treatise on Elasticity (1944) "
+    "§§262-263; Timoshenko & Gere, Theory of Elastic Stability (1961) §2.7; PHYSICS.md §3.2-3.3";
+constexpr const char* kMattiassonCitation =
+    "Bisshopp & Drucker 1945, Q. Appl. Math. 3:272; Mattiasson 1981, IJNME 17:145-153 (Table 1); "
+    "incomplete elliptic integrals, PHYSICS.md §3.5";
+
+const e2d::Scheme kSchemes[] = {e2d::Scheme::Polygon, e2d::Scheme::Arcs};
+
+std::string scheme_text(e2d::Scheme scheme) {
+  return scheme == e2d::Scheme::Polygon
+             ? "polygon (nodal discrete elastica: inextensible edges, curvature at vertices)"
+             : "arcs (reduced coordinates: piecewise-constant curvature, exact circular arcs)";
+}
+
+Resolution element_resolution(const ElasticaLevelPlan& plan) {
+  return {"N", "number of elements", ResolutionScale::Count, plan.levels, plan.extended_levels};
+}
+
+MetricSample error_sample(double computed, double reference) {
+  return {computed, reference, std::abs(computed - reference)};
+}
+
+// H along the solution and its spread (PHYSICS.md §1.4: not conserved exactly by a discretisation;
+// its spread converges with the mesh).
+void add_noether_metrics(LevelOutput& output, const PlanarRodSolution& solution,
+                         std::optional<double> exact_h) {
+  const auto spread = invariants::planar_noether_spread(solution);
+  output.metrics["H_spread"] = {spread.spread, 0.0, spread.spread};
+  if (exact_h) output.metrics["H_mean"] = error_sample(spread.mean, *exact_h);
+  const auto h = invariants::planar_noether_h(solution);
+  output.series.push_back(thin_series("H(s)", "s", "H", solution.s, h));
+}
+
+void add_shape_series(LevelOutput& output, const PlanarRodSolution& solution,
+                      const std::vector<double>& exact_x, const std::vector<double>& exact_y) {
+  output.series.push_back(thin_series("shape|computed", "x", "y", solution.x, solution.y));
+  output.series.push_back(thin_series("shape|closed form", "x", "y", exact_x, exact_y));
+  output.series.push_back(thin_series("tension n.t", "s", "n.t", solution.s, solution.axial_force));
+}
+
+std::size_t element_count(double level) { return static_cast<std::size_t>(std::llround(level)); }
+
+// ---- pinned-pinned column -----------------------------------------------------------------------
+
+// A first-mode guess from the load alone: P/P_E ~ 1 + theta0^2/8 near onset (PHYSICS.md §3.2),
+// capped well inside (0, pi); load stepping carries it to large rotations.
+double first_mode_amplitude(double load_over_euler) {
+  return std::clamp(std::sqrt(8.0 * std::max(load_over_euler - 1.0, 0.0)), 0.3, 2.0);
+}
+
+LevelOutput run_pinned_level(e2d::Scheme scheme, const Parameters& parameters, double level,
+                             bool displacement_control) {
+  const ref::PinnedColumn column{parameter_value(parameters, "L"), parameter_value(parameters, "EI")};
+  const double theta0 = parameter_value(parameters, "theta0_deg") * kPi / 180.0;
+  const ref::PinnedSolution exact = ref::pinned_solution(column, theta0);
+  const double euler = kPi * kPi * column.EI / (column.L * column.L);
+
+  e2d::Problem problem;
+  problem.length = column.L;
+  problem.bending_stiffness = [EI = column.EI](double) { return EI; };
+  problem.start.support = e2d::Support::Pinned;
+  e2d::SolverOptions options;
+  if (displacement_control) {
+    // The end is pinned at the imposed chord; the reaction is the load.
+    problem.end.support = e2d::Support::Pinned;
+    problem.end.x = exact.chord;
+    options.load_steps = 8;
+  } else {
+    // A unit dead load scaled by the continuation's load factor.
+    problem.end.support = e2d::Support::Sliding;
+    problem.end.load.force_x = -1.0;
+  }
+  const e2d::Discretisation discretisation{scheme, element_count(level)};
+  PlanarRodSolution solution;
+  if (displacement_control) {
+    const double amplitude = first_mode_amplitude(2.0);
+    e2d::InitialGuess guess;
+    guess.theta = [amplitude, L = column.L](double s) { return amplitude * std::cos(kPi * s / L); };
+    solution = e2d::solve_static(problem, discretisation, options, guess);
+  } else {
+    // Load control past the bifurcation: start on the first-mode branch just above the Euler load
+    // (5 %, guess amplitude from P/P_E ~ 1 + theta0^2/8) and follow it by pseudo-arc-length
+    // continuation to the target load. Plain load stepping from zero would stay on the straight
+    // (unstable) branch.
+    const double start = 1.05 * euler;
+    const double amplitude = first_mode_amplitude(start / euler);
+    e2d::InitialGuess guess;
+    guess.theta = [amplitude, L = column.L](double s) { return amplitude * std::cos(kPi * s / L); };
+    e2d::ContinuationOptions continuation;
+    continuation.initial_load_factor = start;
+    continuation.final_load_factor = exact.P;
+    continuation.step = 0.05 * euler;
+    continuation.max_step = 2.0 * euler;
+    if (exact.P <= start) {
+      // Near onset (theta0 ~ 10 deg: P/P_E = 1.004): one Newton solve at the load from the onset guess.
+      problem.end.load.force_x = -exact.P;
+      guess.theta = [a = first_mode_amplitude(exact.P / euler), L = column.L](double s) {
+        return a * std::cos(kPi * s / L);
+      };
+      solution = e2d::solve_static(problem, discretisation, options, guess);
+    } else {
+      solution = e2d::trace_branch(problem, discretisation, options, guess, continuation).back().solution;
+    }
+  }
+
+  const std::size_t n = solution.nodes() - 1, mid = n / 2;
+  LevelOutput output;
+  std::vector<double> exact_x, exact_y;
+  double shape_error = 0.0;
+  for (std::size_t i = 0; i <= n; ++i) {
+    const ref::ElasticaPoint point = ref::pinned_point(column, theta0, solution.s[i]);
+    shape_error = std::max(shape_error, std::hypot(solution.x[i] - point.x, solution.y[i] - point.y));
+    exact_x.push_back(point.x);
+    exact_y.push_back(point.y);
+  }
+  output.metrics["shape_max_error"] = {shape_error, 0.0, shape_error};
+  output.metrics["y_M"] = error_sample(solution.y[mid], exact.y_M);
+  output.metrics["kappa_M"] = error_sample(std::abs(solution.kappa[mid]), exact.kappa_M);
+  output.metrics["theta0"] = error_sample(solution.theta.front(), theta0);
+  if (displacement_control)
+    output.metrics["reaction_P"] = error_sample(-solution.force_x.back(), exact.P);
+  else
+    output.metrics["shortening"] = error_sample(column.L - solution.x.back(), exact.shortening);
+  output.metrics["newton_iterations"] = {double(solution.iterations), std::nullopt, std::nullopt};
+  add_noether_metrics(output, solution, exact.H);
+  add_shape_series(output, solution, exact_x, exact_y);
+  return output;
+}
+
+Parameters column_parameters(double theta0_deg) {
+  return {make_parameter("L", 1.0, 0.0, 1e6, true, false, "length", "rod length"),
+          make_parameter("EI", 1.0, 0.0, 1e12, true, false, "force length^2", "bending stiffness"),
+          make_parameter("theta0_deg", theta0_deg, 0.0, 180.0, true, true, "deg",
+                         "end rotation of the first buckled mode; the load is P = 4K(k)^2 EI/L^2")};
+}
+
+// ---- Mattiasson cantilever ----------------------------------------------------------------------
+
+LevelOutput run_mattiasson_level(e2d::Scheme scheme, const Parameters& parameters, double level) {
+  const double L = parameter_value(parameters, "L"), EI = parameter_value(parameters, "EI");
+  const double alpha = parameter_value(parameters, "alpha");
+  const ref::TipLoadedCantilever cantilever{L, EI, alpha * EI / (L * L)};
+  const ref::CantileverTip tip = ref::cantilever_tip(cantilever);
+
+  e2d::Problem problem;
+  problem.length = L;
+  problem.bending_stiffness = [EI](double) { return EI; };
+  problem.start.support = e2d::Support::Clamped;
+  problem.end.load.force_y = -cantilever.P;
+  e2d::SolverOptions options;
+  options.load_steps = alpha > 3.0 ? 6 : 2;
+  const PlanarRodSolution solution = e2d::solve_static(problem, {scheme, element_count(level)}, options);
+
+  LevelOutput output;
+  output.metrics["tip_w"] = error_sample(-solution.y.back(), tip.w);
+  output.metrics["tip_u"] = error_sample(L - solution.x.back(), tip.u);
+  output.metrics["tip_phi"] = error_sample(-solution.theta.back(), tip.phi_L);
+  std::vector<double> exact_x, exact_y;
+  double shape_error = 0.0;
+  for (std::size_t i = 0; i < solution.nodes(); ++i) {
+    const ref::CantileverPoint point = ref::cantilever_point(cantilever, solution.s[i]);
+    shape_error = std::max(shape_error, std::hypot(solution.x[i] - point.x, solution.y[i] + point.w));
+    exact_x.push_back(point.x);
+    exact_y.push_back(-point.w);
+  }
+  output.metrics["shape_max_error"] = {shape_error, 0.0, shape_error};
+  output.metrics["newton_iterations"] = {double(solution.iterations), std::nullopt, std::nullopt};
+  add_noether_metrics(output, solution, tip.H);
+  add_shape_series(output, solution, exact_x, exact_y);
+  return output;
+}
+
+// ---- roll-up ------------------------------------------------------------------------------------
+
+LevelOutput run_roll_up_level(e2d::Scheme scheme, const Parameters& parameters, double level) {
+  const double L = parameter_value(parameters, "L"), EI = parameter_value(parameters, "EI");
+  const double turns = parameter_value(parameters, "turns");
+  const ref::EndMomentCantilever cantilever{L, EI, turns * ref::roll_up_moment(L, EI)};
+
+  e2d::Problem problem;
+  problem.length = L;
+  problem.bending_stiffness = [EI](double) { return EI; };
+  problem.start.support = e2d::Support::Clamped;
+  problem.end.load.moment = cantilever.M;
+  e2d::SolverOptions options;
+  options.load_steps = 4;
+  const PlanarRodSolution solution = e2d::solve_static(problem, {scheme, element_count(level)}, options);
+
+  LevelOutput output;
+  double shape_error = 0.0;
+  std::vector<double> exact_x, exact_y;
+  for (std::size_t i = 0; i < solution.nodes(); ++i) {
+    const ref::ElasticaPoint point = ref::end_moment_point(cantilever, solution.s[i]);
+    shape_error = std::max(shape_error, std::hypot(solution.x[i] - point.x, solution.y[i] - point.y));
+    exact_x.push_back(point.x);
+    exact_y.push_back(point.y);
+  }
+  const ref::ElasticaPoint end = ref::end_moment_point(cantilever, L);
+  output.metrics["tip_position"] = {std::hypot(solution.x.back(), solution.y.back()), std::hypot(end.x, end.y),
+                                    std::hypot(solution.x.back() - end.x, solution.y.back() - end.y)};
+  output.metrics["shape_max_error"] = {shape_error, 0.0, shape_error};
+  add_noether_metrics(output, solution, ref::end_moment_invariant(cantilever));
+  add_shape_series(output, solution, exact_x, exact_y);
+  return output;
+}
+
+// ---- tapered and curved: predicted drift of H -----------------------------------------------
+
+enum class Variation { Tapered, Curved };
+
+LevelOutput run_drift_level(Variation variation, e2d::Scheme scheme, const Parameters& parameters,
+                            double level) {
+  const double L = 1.0, P = parameter_value(parameters, "P");
+  const double slope = parameter_value(parameters, "gradient");
+  e2d::Problem problem;
+  problem.length = L;
+  std::function<double(double)> d_ei, d_kappa_hat;
+  if (variation == Variation::Tapered) {
+    problem.bending_stiffness = [slope](double s) { return 1.0 + slope * s; };
+    d_ei = [slope](double) { return slope; };
+  } else {
+    problem.natural_curvature = [slope](double s) { return 0.3 + slope * s; };
+    d_kappa_hat = [slope](double) { return slope; };
+  }
+  problem.start.support = e2d::Support::Clamped;
+  problem.end.load.force_y = -P;
+  e2d::SolverOptions options;
+  options.load_steps = 2;
+  const PlanarRodSolution solution = e2d::solve_static(problem, {scheme, element_count(level)}, options);
+
+  const auto check = invariants::planar_noether_drift_check(solution, d_ei, d_kappa_hat);
+  LevelOutput output;
+  // Error of the measured drift H(s) - H(0) against its predicted integral (PHYSICS.md §1.3).
+  output.metrics["drift_residual"] = {check.max_abs_residual, 0.0, check.max_abs_residual};
+  output.metrics["H_drift"] = {check.max_abs_drift, std::nullopt, std::nullopt};
+  const auto h = invariants::planar_noether_h(solution);
+  const auto predicted = invariants::planar_noether_predicted_drift(solution, d_ei, d_kappa_hat);
+  std::vector<double> measured(h.size());
+  for (std::size_t i = 0; i < h.size(); ++i) measured[i] = h[i] - h.front();
+  output.series.push_back(thin_series("H(s) - H(0)|measured", "s", "H(s) - H(0)", solution.s, measured));
+  output.series.push_back(thin_series("H(s) - H(0)|predicted", "s", "H(s) - H(0)", solution.s, predicted));
+  return output;
+}
+
+// ---- case assembly ------------------------------------------------------------------------------
+
+Case make_case(std::string name, std::string group, std::string title, e2d::Scheme scheme,
+               std::string physics, std::string reference, std::string citation, Parameters parameters,
+               const ElasticaLevelPlan& plan, std::vector<MetricSpec> metrics, LevelRunner runner) {
+  Case c;
+  c.info.name = std::move(name);
+  c.info.family = "elastica";
+  c.info.group = std::move(group);
+  c.info.title = std::move(title);
+  c.info.physics = std::move(physics);
+  c.info.reference = std::move(reference);
+  c.info.citation = std::move(citation);
+  c.info.method = scheme_text(scheme) + "; Newton on the KKT system, banded LU, load stepping";
+  c.info.parameters = std::move(parameters);
+  c.info.resolution = element_resolution(plan);
+  c.info.metrics = std::move(metrics);
+  for (const auto& gate : plan.gates) c.gates.push_back(gate);
+  c.run_level = std::move(runner);
+  return c;
+}
+
+MetricSpec error_metric(std::string name, std::string unit, std::string description, bool extrapolate,
+                        std::optional<double> order = 2.0) {
+  return {std::move(name), MetricKind::Error, std::move(unit), std::move(description), extrapolate, order};
+}
+
+std::vector<MetricSpec> noether_metrics(bool has_exact_h) {
+  std::vector<MetricSpec> metrics{{"H_spread", MetricKind::Invariant, "",
+                                   "max |H(s) - mean H| / natural scale (PHYSICS.md §1.4)", false, 2.0}};
+  if (has_exact_h)
+    metrics.push_back(error_metric("H_mean", "force", "mean of H(s) vs the closed-form H", true));
+  return metrics;
+}
+
+}  // namespace
+
+void register_elastica_cases(Registry& registry) {
+  for (e2d::Scheme scheme : kSchemes) {
+    const std::string id(e2d::scheme_id(scheme));
+    for (double degrees : {10.0, 60.0, 120.0, 170.0}) {
+      const std::string motion = fmt::format("pinned-pinned-{:g}", degrees);
+      auto metrics = std::vector<MetricSpec>{
+          error_metric("shape_max_error", "length", "max |r_i - r_exact(s_i)| over nodes", false),
+          error_metric("y_M", "length", "midspan deflection vs L k/K", true),
+          error_metric("kappa_M", "1/length", "|midspan curvature| vs 4kK/L", true),
+          error_metric("theta0", "rad", "end rotation", true, std::nullopt),
+          error_metric("shortening", "length", "end shortening vs 2L(1 - E/K)", true),
+          {"newton_iterations", MetricKind::Diagnostic, "", "Newton iterations (all load steps)", false, std::nullopt}};
+      for (auto& m : noether_metrics(true)) metrics.push_back(m);
+      registry.add(make_case(
+          fmt::format("elastica/{}/{}", motion, id), "elastica/" + motion,
+          fmt::format("pinned-pinned column, first mode at theta0 = {:g} deg, {}", degrees, id), scheme,
+          "Inextensible planar elastica EI theta'' = -P sin theta between pins, the sliding end loaded by "
+          "a dead compressive force P beyond the Euler load; the first buckled mode.",
+          "theta = 2 asin(k sn(K - lambda s)), lambda L = 2K(k), k = sin(theta0/2); y_M = Lk/K, "
+          "kappa_M = 4kK/L, shortening 2L(1 - E/K), H = -P cos theta0",
+          kPinnedCitation, column_parameters(degrees), elastica_level_plan(motion, id), metrics,
+          [scheme](const Parameters& p, double level) { return run_pinned_level(scheme, p, level, false); }));
+    }
+    {
+      auto metrics = std::vector<MetricSpec>{
+          error_metric("shape_max_error", "length", "max |r_i - r_exact(s_i)| over nodes", false),
+          error_metric("y_M", "length", "midspan deflection", true),
+          error_metric("kappa_M", "1/length", "|midspan curvature|", true),
+          error_metric("theta0", "rad", "end rotation", true, std::nullopt),
+          error_metric("reaction_P", "force", "reaction at the displaced pin vs 4K^2 EI/L^2", true),
+          {"newton_iterations", MetricKind::Diagnostic, "", "Newton iterations (all load steps)", false, std::nullopt}};
+      for (auto& m : noether_metrics(true)) metrics.push_back(m);
+      registry.add(make_case(
+          fmt::format("elastica/pinned-displacement/{}", id), "elastica/pinned-displacement",
+          fmt::format("pinned-pinned column under imposed end shortening, {}", id), scheme,
+          "The pinned-pinned column with the end displacement imposed (displacement control): the pin "
+          "at s = L is moved to the chord of the theta0 mode and the reaction force is computed.",
+          "reaction P = 4K(k)^2 EI/L^2 for chord L(2E/K - 1)", kPinnedCitation, column_parameters(60.0),
+          elastica_level_plan("pinned-displacement", id), metrics,
+          [scheme](const Parameters& p, double level) { return run_pinned_level(scheme, p, level, true); }));
+    }
+    for (double alpha : {1.0, 2.0, 5.0, 10.0}) {
+      const std::string motion = fmt::format("mattiasson-{:g}", alpha);
+      auto metrics = std::vector<MetricSpec>{
+          error_metric("tip_w", "length", "vertical tip deflection (Mattiasson 1981 Table 1)", true),
+          error_metric("tip_u", "length", "horizontal tip displacement", true),
+          error_metric("tip_phi", "rad", "tip rotation", true),
+          error_metric("shape_max_error", "length", "max |r_i - r_exact(s_i)| over nodes", false),
+          {"newton_iterations", MetricKind::Diagnostic, "", "Newton iterations (all load steps)", false, std::nullopt}};
+      for (auto& m : noether_metrics(true)) metrics.push_back(m);
+      registry.add(make_case(
+          fmt::format("elastica/{}/{}", motion, id), "elastica/" + motion,
+          fmt::format("clamped-free cantilever, dead tip load P L^2/EI = {:g}, {}", alpha, id), scheme,
+          "Cantilever clamped horizontally at s = 0 with a vertical dead load P at the free end: "
+          "EI phi'' = -P cos phi, phi(0) = 0, phi'(L) = 0.",
+          "sqrt(alpha) = K(k) - F(psi0, k), tip displacements by incomplete elliptic integrals; "
+          "H = P sin(phi_L)",
+          kMattiassonCitation,
+          {make_parameter("L", 1.0, 0.0, 1e6, true, false, "length", "rod length"),
+           make_parameter("EI", 1.0, 0.0, 1e12, true, false, "force length^2", "bending stiffness"),
+           make_parameter("alpha", alpha, 0.0, 100.0, true, false, "", "load parameter P L^2 / EI")},
+          elastica_level_plan(motion, id), metrics,
+          [scheme](const Parameters& p, double level) { return run_mattiasson_level(scheme, p, level); }));
+    }
+    {
+      auto metrics = std::vector<MetricSpec>{
+          error_metric("tip_position", "length", "|r(L)| vs the closed-circle value (0 for one turn)",
+                       false, std::nullopt),
+          error_metric("shape_max_error", "length", "max |r_i - r_exact(s_i)| over nodes", false,
+                       scheme == e2d::Scheme::Polygon ? std::optional<double>(2.0) : std::nullopt)};
+      for (auto& m : noether_metrics(true)) metrics.push_back(m);
+      metrics[2].theoretical_order = std::nullopt;  // H_spread: round-off for both (n = 0)
+      registry.add(make_case(
+          fmt::format("elastica/roll-up/{}", id), "elastica/roll-up",
+          fmt::format("cantilever rolled into a full circle by an end moment, {}", id), scheme,
+          "Cantilever clamped at s = 0 with a dead end moment M = 2 pi EI/L (turns = 1): an exact circle.",
+          "theta = M s/EI, x = (EI/M) sin(Ms/EI), y = (EI/M)(1 - cos(Ms/EI)); H = M^2/(2EI)",
+          "Exact circle under a pure end moment (Euler); PHYSICS.md §3.4",
+          {make_parameter("L", 1.0, 0.0, 1e6, true, false, "length", "rod length"),
+           make_parameter("EI", 1.0, 0.0, 1e12, true, false, "force length^2", "bending stiffness"),
+           make_parameter("turns", 1.0, 0.0, 1.0, true, false, "", "M L / (2 pi EI)")},
+          elastica_level_plan("roll-up", id), metrics,
+          [scheme](const Parameters& p, double level) { return run_roll_up_level(scheme, p, level); }));
+    }
+    for (Variation variation : {Variation::Tapered, Variation::Curved}) {
+      const bool tapered = variation == Variation::Tapered;
+      const std::string motion = tapered ? "tapered" : "curved";
+      registry.add(make_case(
+          fmt::format("elastica/{}/{}", motion, id), "elastica/" + motion,
+          fmt::format("{} cantilever: measured H(s) drift vs predicted, {}",
+                      tapered ? "tapered (EI = 1 + g s)" : "naturally curved (kappa_hat = 0.3 + g s)", id),
+          scheme,
+          tapered ? "Cantilever with bending stiffness EI(s) = 1 + g s under a vertical dead tip load P: "
+                    "the Lagrangian depends on s, so H is not conserved."
+                  : "Cantilever with natural curvature kappa_hat(s) = 0.3 + g s under a vertical dead tip "
+                    "load P: the Lagrangian depends on s, so H is not conserved.",
+          tapered ? "dH/ds = -1/2 EI'(s) theta'^2 (PHYSICS.md §1.3(a); the slides' sign is wrong)"
+                  : "dH/ds = +EI kappa_hat'(s) (theta' - kappa_hat) (PHYSICS.md §1.3(b); the slides' "
+                    "sign is wrong)",
+          "Noether's theorem with explicit s-dependence, dH/ds = -dL/ds; PHYSICS.md §1.3",
+          {make_parameter("P", 3.0, 0.0, 1e3, true, false, "force", "tip load (L = 1)"),
+           make_parameter("gradient", tapered ? 0.5 : 0.2, -0.9, 10.0, true, false, "",
+                          tapered ? "g in EI = 1 + g s" : "g in kappa_hat = 0.3 + g s")},
+          elastica_level_plan(motion, id),
+          {error_metric("drift_residual", "force",
+                        "max |(H(s) - H(0)) - integral of the predicted dH/ds| over nodes", false),
+           {"H_drift", MetricKind::Diagnostic, "force", "max |H(s) - H(0)|: how far H moves", false,
+            std::nullopt}},
+          [variation, scheme](const Parameters& p, double level) {
+            return run_drift_level(variation, scheme, p, level);
+          }));
+    }
+  }
+}
+
+}  // namespace rodvv::harness
