@@ -9,7 +9,7 @@ Writes into OUTDIR/plots:
                                "<plot>|<label>" share one figure <plot> with a legend (e.g.
                                "shape|computed" and "shape|closed form"); a series whose axes are
                                labelled "x" and "y" is drawn with equal aspect (a rod's shape)
-  group-<group>-<name>.png     a series overlaid across the cases of a group (finest levels)
+  group-<group>-<name>.png     an unlabelled series overlaid across the cases of a group (finest levels)
   manifest.json                {"cases": {name: [{"file", "caption"}]}, "groups": {...}}
 File names in the manifest are relative to OUTDIR (they start with "plots/").
 
@@ -332,7 +332,8 @@ def plan(cases):
                 series_stems.append((by_key[key], names(f"{stem}-series-{slugify(key)}")))
             by_key[key].append(k)
             group = info.get("group")
-            if isinstance(group, str) and group:
+            # Labelled series ("plot|label") are already compared inside their case's figure.
+            if isinstance(group, str) and group and not plot_key(series["name"])[1]:
                 overlays.setdefault(group, {}).setdefault(series["name"], []).append(index)
         case_jobs.append(("case", index, stem + "-convergence", series_stems))
     group_jobs = []
