@@ -3,61 +3,35 @@
 // gate.
 #include <gtest/gtest.h>
 
-#include <cctype>
 #include <string>
 
-#include "rodvv/harness/registry.hpp"
-#include "rodvv/harness/sweep.hpp"
+#include "case_test_support.hpp"
 
 namespace {
 
 using namespace rodvv::harness;
+using rodvv::testing::failing_gates;
+using rodvv::testing::run_at_default_levels;
 
-std::vector<std::string> elastica_case_names() {
-  std::vector<std::string> names;
-  for (const auto& c : default_registry().cases())
-    if (c.info.family == "elastica") names.push_back(c.info.name);
-  return names;
-}
-
-const Case& named(const std::string& name) {
-  const Case* c = default_registry().find(name);
-  if (!c) throw std::logic_error("no case " + name);
-  return *c;
-}
-
-SweepResult run_default(const Case& c) {
-  return run_sweep(c, c.info.parameters, c.info.resolution.default_levels);
-}
-
-std::string failures(const SweepResult& result) {
-  std::string text;
-  for (const auto& gate : result.gates)
-    if (!gate.passed) text += "\n  " + gate.name + ": " + gate.reason;
-  for (const auto& level : result.levels)
-    if (level.failure) text += "\n  level failed: " + *level.failure;
-  return text;
-}
+const Case& named(const std::string& name) { return rodvv::testing::named_case(name); }
+SweepResult run_default(const Case& c) { return run_at_default_levels(c); }
 
 class ElasticaCase : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ElasticaCase, PassesAtDefaultLevels) {
   const auto result = run_default(named(GetParam()));
-  EXPECT_TRUE(result.passed()) << GetParam() << failures(result);
+  EXPECT_TRUE(result.passed()) << GetParam() << failing_gates(result);
   EXPECT_FALSE(result.gates.empty());
 }
 
-INSTANTIATE_TEST_SUITE_P(AllElasticaCases, ElasticaCase, ::testing::ValuesIn(elastica_case_names()),
+INSTANTIATE_TEST_SUITE_P(AllElasticaCases, ElasticaCase, ::testing::ValuesIn(rodvv::testing::case_names_of_family("elastica")),
                          [](const ::testing::TestParamInfo<std::string>& param_info) {
-                           std::string name;
-                           for (char ch : param_info.param)
-                             name += std::isalnum(static_cast<unsigned char>(ch)) ? ch : 'X';
-                           return name;
+                           return rodvv::testing::test_name_of_case(param_info.param);
                          });
 
 TEST(ElasticaCatalogue, HasBothSchemesForEveryProblem) {
   // 4 columns + displacement control + 4 cantilevers + roll-up + tapered + curved, x 2 schemes.
-  EXPECT_EQ(elastica_case_names().size(), 24u);
+  EXPECT_EQ(rodvv::testing::case_names_of_family("elastica").size(), 24u);
 }
 
 // The arcs are exact for the rolled-up circle; the polygon is only second order: under the arcs'

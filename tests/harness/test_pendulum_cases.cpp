@@ -5,58 +5,34 @@
 #include <string>
 
 #include "rodvv/common/errors.hpp"
-#include "rodvv/harness/registry.hpp"
-#include "rodvv/harness/sweep.hpp"
+#include "case_test_support.hpp"
 
 namespace {
 
 using namespace rodvv::harness;
+using rodvv::testing::failing_gates;
+using rodvv::testing::run_at_default_levels;
 
-std::vector<std::string> pendulum_case_names() {
-  std::vector<std::string> names;
-  for (const auto& c : default_registry().cases())
-    if (c.info.family == "pendulum") names.push_back(c.info.name);
-  return names;
-}
-
-const Case& named(const std::string& name) {
-  const Case* c = default_registry().find(name);
-  if (!c) throw std::logic_error("no case " + name);
-  return *c;
-}
-
-SweepResult run_default(const Case& c) {
-  return run_sweep(c, c.info.parameters, c.info.resolution.default_levels);
-}
-
-std::string failures(const SweepResult& result) {
-  std::string text;
-  for (const auto& gate : result.gates)
-    if (!gate.passed) text += "\n  " + gate.name + ": " + gate.reason;
-  for (const auto& level : result.levels)
-    if (level.failure) text += "\n  level failed: " + *level.failure;
-  return text;
-}
+const Case& named(const std::string& name) { return rodvv::testing::named_case(name); }
+SweepResult run_default(const Case& c) { return run_at_default_levels(c); }
 
 class PendulumCase : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(PendulumCase, PassesAtDefaultLevels) {
   const auto result = run_default(named(GetParam()));
-  EXPECT_TRUE(result.passed()) << GetParam() << failures(result);
+  EXPECT_TRUE(result.passed()) << GetParam() << failing_gates(result);
   EXPECT_FALSE(result.gates.empty());
 }
 
 std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
-  std::string name;
-  for (char ch : info.param) name += std::isalnum(static_cast<unsigned char>(ch)) ? ch : 'X';
-  return name;
+  return rodvv::testing::test_name_of_case(info.param);
 }
 
-INSTANTIATE_TEST_SUITE_P(AllPendulumCases, PendulumCase, ::testing::ValuesIn(pendulum_case_names()),
+INSTANTIATE_TEST_SUITE_P(AllPendulumCases, PendulumCase, ::testing::ValuesIn(rodvv::testing::case_names_of_family("pendulum")),
                          test_name);
 
 TEST(PendulumCatalogue, HasEveryMotionAndMethod) {
-  const auto names = pendulum_case_names();
+  const auto names = rodvv::testing::case_names_of_family("pendulum");
   // 5 motions x 6 methods + 5 fixed-step methods in the long-time energy group.
   EXPECT_EQ(names.size(), 35u);
   for (const auto& c : default_registry().cases()) {
