@@ -20,8 +20,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
 #include <functional>
 #include <iomanip>
 #include <iostream>
@@ -35,6 +33,7 @@
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/references/elastica.hpp"
+#include "rodvv/testing/reference_table.hpp"
 #include "rodvv/testing/tolerance.hpp"
 
 namespace {
@@ -42,6 +41,8 @@ namespace {
 namespace ref = rodvv::references;
 using rodvv::testing::is_close;
 using rodvv::testing::kEpsilon;
+using rodvv::testing::parse_table_number;
+using rodvv::testing::read_reference_table;
 using std::numbers::pi;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -67,38 +68,11 @@ struct Row {
   bool is_scalar() const { return std::isnan(s); }
 };
 
-double parse_field(const std::string& field) {
-  if (field.empty()) return kNaN;
-  char* end = nullptr;
-  const double value = std::strtod(field.c_str(), &end);  // correctly rounded to nearest
-  EXPECT_EQ(*end, '\0') << "bad number '" << field << "'";
-  return value;
-}
-
 std::vector<Row> load_table() {
-  const std::string path = std::string(RODVV_TEST_DATA_DIR) + "/elastica_reference.csv";
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << "cannot open " << path;
   std::vector<Row> rows;
-  std::string line;
-  bool header_seen = false;
-  while (std::getline(in, line)) {
-    if (line.empty() || line.front() == '#') continue;
-    if (!header_seen) {
-      EXPECT_EQ(line, "case,param,L,EI,s,quantity,value");
-      header_seen = true;
-      continue;
-    }
-    std::vector<std::string> fields;
-    std::stringstream stream(line);
-    std::string field;
-    while (std::getline(stream, field, ',')) fields.push_back(field);
-    EXPECT_EQ(fields.size(), 7u) << "malformed line: " << line;
-    if (fields.size() != 7u) continue;
-    rows.push_back({fields[0], parse_field(fields[1]), parse_field(fields[2]),
-                    parse_field(fields[3]), parse_field(fields[4]), fields[5],
-                    parse_field(fields[6])});
-  }
+  for (const auto& f : read_reference_table("elastica_reference.csv", "case,param,L,EI,s,quantity,value"))
+    rows.push_back({f[0], parse_table_number(f[1]), parse_table_number(f[2]), parse_table_number(f[3]),
+                    parse_table_number(f[4]), f[5], parse_table_number(f[6])});
   return rows;
 }
 

@@ -13,20 +13,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
 #include <functional>
 #include <iomanip>
 #include <iostream>
 #include <limits>
 #include <map>
 #include <numbers>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/references/pendulum.hpp"
+#include "rodvv/testing/reference_table.hpp"
 #include "rodvv/testing/tolerance.hpp"
 
 namespace {
@@ -35,6 +33,8 @@ namespace ref = rodvv::references;
 using rodvv::testing::in_epsilons;
 using rodvv::testing::is_close;
 using rodvv::testing::kEpsilon;
+using rodvv::testing::parse_table_number;
+using rodvv::testing::read_reference_table;
 using std::numbers::pi;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -88,39 +88,13 @@ struct Row {
   double period = kNaN;
 };
 
-double parse_field(const std::string& field) {
-  if (field.empty()) return kNaN;
-  char* end = nullptr;
-  const double value = std::strtod(field.c_str(), &end);  // correctly rounded to nearest
-  EXPECT_EQ(*end, '\0') << "bad number '" << field << "'";
-  return value;
-}
-
 std::vector<Row> load_table() {
-  const std::string path = std::string(RODVV_TEST_DATA_DIR) + "/pendulum_reference.csv";
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << "cannot open " << path;
   std::vector<Row> rows;
-  std::string line;
-  bool header_seen = false;
-  while (std::getline(in, line)) {
-    if (line.empty() || line.front() == '#') continue;
-    if (!header_seen) {  // column names
-      EXPECT_EQ(line, "kind,family,omega,param,t,theta,theta_dot,energy,period");
-      header_seen = true;
-      continue;
-    }
-    std::vector<std::string> fields;
-    std::stringstream stream(line);
-    std::string field;
-    while (std::getline(stream, field, ',')) fields.push_back(field);
-    if (!line.empty() && line.back() == ',') fields.emplace_back();
-    EXPECT_EQ(fields.size(), 9u) << "malformed line: " << line;
-    if (fields.size() != 9u) continue;
-    rows.push_back({fields[0], fields[1], parse_field(fields[2]), parse_field(fields[3]),
-                    parse_field(fields[4]), parse_field(fields[5]), parse_field(fields[6]),
-                    parse_field(fields[7]), parse_field(fields[8])});
-  }
+  for (const auto& f : read_reference_table("pendulum_reference.csv",
+                                            "kind,family,omega,param,t,theta,theta_dot,energy,period"))
+    rows.push_back({f[0], f[1], parse_table_number(f[2]), parse_table_number(f[3]),
+                    parse_table_number(f[4]), parse_table_number(f[5]), parse_table_number(f[6]),
+                    parse_table_number(f[7]), parse_table_number(f[8])});
   return rows;
 }
 
