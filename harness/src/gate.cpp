@@ -24,26 +24,27 @@ const char* scope_words(GateScope scope) {
 }
 }  // namespace
 
-GateSpec upper_bound_gate(std::string metric, double bound, GateScope scope, std::string rationale) {
+namespace {
+GateSpec bound_gate(GateKind kind, std::string metric, double bound, GateScope scope,
+                    std::string rationale) {
+  const bool upper = kind == GateKind::UpperBound;
   GateSpec gate;
-  gate.name = fmt::format("{} <= {:.3g} {}", metric, bound, scope_words(scope));
-  gate.kind = GateKind::UpperBound;
+  gate.name = fmt::format("{} {} {:.3g} {}", metric, upper ? "<=" : ">=", bound, scope_words(scope));
+  gate.kind = kind;
   gate.metric = std::move(metric);
-  gate.upper = bound;
+  (upper ? gate.upper : gate.lower) = bound;
   gate.scope = scope;
   gate.rationale = std::move(rationale);
   return gate;
 }
+}  // namespace
+
+GateSpec upper_bound_gate(std::string metric, double bound, GateScope scope, std::string rationale) {
+  return bound_gate(GateKind::UpperBound, std::move(metric), bound, scope, std::move(rationale));
+}
 
 GateSpec lower_bound_gate(std::string metric, double bound, GateScope scope, std::string rationale) {
-  GateSpec gate;
-  gate.name = fmt::format("{} >= {:.3g} {}", metric, bound, scope_words(scope));
-  gate.kind = GateKind::LowerBound;
-  gate.metric = std::move(metric);
-  gate.lower = bound;
-  gate.scope = scope;
-  gate.rationale = std::move(rationale);
-  return gate;
+  return bound_gate(GateKind::LowerBound, std::move(metric), bound, scope, std::move(rationale));
 }
 
 GateSpec scaled_upper_bound_gate(std::string metric, double constant, double order, GateScope scope,

@@ -57,6 +57,13 @@ Resolution element_resolution(const ElasticaLevelPlan& plan) {
   return {"N", "number of elements", ResolutionScale::Count, plan.levels, plan.extended_levels};
 }
 
+Parameter length_parameter() {
+  return make_parameter("L", 1.0, 0.0, 1e6, true, false, "length", "rod length");
+}
+Parameter stiffness_parameter() {
+  return make_parameter("EI", 1.0, 0.0, 1e12, true, false, "force length^2", "bending stiffness");
+}
+
 MetricSample error_sample(double computed, double reference) {
   return {computed, reference, std::abs(computed - reference)};
 }
@@ -77,6 +84,32 @@ void add_shape_series(LevelOutput& output, const PlanarRodSolution& solution,
   output.series.push_back(thin_series("shape|computed", "x", "y", solution.x, solution.y));
   output.series.push_back(thin_series("shape|closed form", "x", "y", exact_x, exact_y));
   output.series.push_back(thin_series("tension n.t", "s", "n.t", solution.s, solution.axial_force));
+}
+
+// Node-by-node distance to the closed-form shape, and that shape for the overlay plot.
+struct ShapeComparison {
+  double max_error = 0.0;
+  std::vector<double> exact_x, exact_y;
+};
+
+template <class ExactPosition>  // (s) -> std::pair<double, double>, the closed-form (x, y)
+ShapeComparison compare_shape(const PlanarRodSolution& solution, ExactPosition&& exact_position) {
+  ShapeComparison result;
+  for (std::size_t i = 0; i < solution.nodes(); ++i) {
+    const auto [x, y] = exact_position(solution.s[i]);
+    result.max_error = std::max(result.max_error, std::hypot(solution.x[i] - x, solution.y[i] - y));
+    result.exact_x.push_back(x);
+    result.exact_y.push_back(y);
+  }
+  return result;
+}
+
+// Shape error metric and the shape, tension and H(s) plots shared by every case with a closed form.
+void add_shape_metrics(LevelOutput& output, const PlanarRodSolution& solution,
+                       const ShapeComparison& shape, double exact_h) {
+  output.metrics["shape_max_error"] = {shape.max_error, 0.0, shape.max_error};
+  add_noether_metrics(output, solution, exact_h);
+  add_shape_series(output, solution, shape.exact_x, shape.exact_y);
 }
 
 std::size_t element_count(double level) { return static_cast<std::size_t>(std::llround(level)); }
@@ -144,17 +177,12 @@ LevelOutput run_pinned_level(e2d::Scheme scheme, const Parameters& parameters, d
     }
   }
 
-  const std::size_t n = solution.nodes() - 1, mid = n / 2;
+  const std::size_t mid = (solution.nodes() - 1) / 2;
   LevelOutput output;
-  std::vector<double> exact_x, exact_y;
-  double shape_error = 0.0;
-  for (std::size_t i = 0; i <= n; ++i) {
-    const ref::ElasticaPoint point = ref::pinned_point(column, theta0, solution.s[i]);
-    shape_error = std::max(shape_error, std::hypot(solution.x[i] - point.x, solution.y[i] - point.y));
-    exact_x.push_back(point.x);
-    exact_y.push_back(point.y);
-  }
-  output.metrics["shape_max_error"] = {shape_error, 0.0, shape_error};
+  const auto shape = compare_shape(solution, [&](double s) {
+    const ref::ElasticaPoint point = ref::pinned_point(column, theta0, s);
+    return std::pair{point.x, point.y};
+  });
   output.metrics["y_M"] = error_sample(solution.y[mid], exact.y_M);
   output.metrics["kappa_M"] = error_sample(std::abs(solution.kappa[mid]), exact.kappa_M);
   output.metrics["theta0"] = error_sample(solution.theta.front(), theta0);
@@ -163,14 +191,12 @@ LevelOutput run_pinned_level(e2d::Scheme scheme, const Parameters& parameters, d
   else
     output.metrics["shortening"] = error_sample(column.L - solution.x.back(), exact.shortening);
   output.metrics["newton_iterations"] = {double(solution.iterations), std::nullopt, std::nullopt};
-  add_noether_metrics(output, solution, exact.H);
-  add_shape_series(output, solution, exact_x, exact_y);
+  add_shape_metrics(output, solution, shape, exact.H);
   return output;
 }
 
 Parameters column_parameters(double theta0_deg) {
-  return {make_parameter("L", 1.0, 0.0, 1e6, true, false, "length", "rod length"),
-          make_parameter("EI", 1.0, 0.0, 1e12, true, false, "force length^2", "bending stiffness"),
+  return {length_parameter(), stiffness_parameter(),
           make_parameter("theta0_deg", theta0_deg, 0.0, 180.0, true, true, "deg",
                          "end rotation of the first buckled mode; the load is P = 4K(k)^2 EI/L^2")};
 }
@@ -196,18 +222,12 @@ LevelOutput run_mattiasson_level(e2d::Scheme scheme, const Parameters& parameter
   output.metrics["tip_w"] = error_sample(-solution.y.back(), tip.w);
   output.metrics["tip_u"] = error_sample(L - solution.x.back(), tip.u);
   output.metrics["tip_phi"] = error_sample(-solution.theta.back(), tip.phi_L);
-  std::vector<double> exact_x, exact_y;
-  double shape_error = 0.0;
-  for (std::size_t i = 0; i < solution.nodes(); ++i) {
-    const ref::CantileverPoint point = ref::cantilever_point(cantilever, solution.s[i]);
-    shape_error = std::max(shape_error, std::hypot(solution.x[i] - point.x, solution.y[i] + point.w));
-    exact_x.push_back(point.x);
-    exact_y.push_back(-point.w);
-  }
-  output.metrics["shape_max_error"] = {shape_error, 0.0, shape_error};
+  const auto shape = compare_shape(solution, [&](double s) {
+    const ref::CantileverPoint point = ref::cantilever_point(cantilever, s);
+    return std::pair{point.x, -point.w};  // w is the downward deflection
+  });
   output.metrics["newton_iterations"] = {double(solution.iterations), std::nullopt, std::nullopt};
-  add_noether_metrics(output, solution, tip.H);
-  add_shape_series(output, solution, exact_x, exact_y);
+  add_shape_metrics(output, solution, shape, tip.H);
   return output;
 }
 
@@ -228,20 +248,14 @@ LevelOutput run_roll_up_level(e2d::Scheme scheme, const Parameters& parameters, 
   const PlanarRodSolution solution = e2d::solve_static(problem, {scheme, element_count(level)}, options);
 
   LevelOutput output;
-  double shape_error = 0.0;
-  std::vector<double> exact_x, exact_y;
-  for (std::size_t i = 0; i < solution.nodes(); ++i) {
-    const ref::ElasticaPoint point = ref::end_moment_point(cantilever, solution.s[i]);
-    shape_error = std::max(shape_error, std::hypot(solution.x[i] - point.x, solution.y[i] - point.y));
-    exact_x.push_back(point.x);
-    exact_y.push_back(point.y);
-  }
+  const auto shape = compare_shape(solution, [&](double s) {
+    const ref::ElasticaPoint point = ref::end_moment_point(cantilever, s);
+    return std::pair{point.x, point.y};
+  });
   const ref::ElasticaPoint end = ref::end_moment_point(cantilever, L);
   output.metrics["tip_position"] = {std::hypot(solution.x.back(), solution.y.back()), std::hypot(end.x, end.y),
                                     std::hypot(solution.x.back() - end.x, solution.y.back() - end.y)};
-  output.metrics["shape_max_error"] = {shape_error, 0.0, shape_error};
-  add_noether_metrics(output, solution, ref::end_moment_invariant(cantilever));
-  add_shape_series(output, solution, exact_x, exact_y);
+  add_shape_metrics(output, solution, shape, ref::end_moment_invariant(cantilever));
   return output;
 }
 
@@ -310,9 +324,20 @@ MetricSpec error_metric(std::string name, std::string unit, std::string descript
   return {std::move(name), MetricKind::Error, std::move(unit), std::move(description), extrapolate, order};
 }
 
-std::vector<MetricSpec> noether_metrics(bool has_exact_h) {
+const MetricSpec kNewtonIterations{"newton_iterations", MetricKind::Diagnostic, "",
+                                   "Newton iterations (all load steps)", false, std::nullopt};
+
+MetricSpec shape_error_metric(std::optional<double> order = 2.0) {
+  return {"shape_max_error", MetricKind::Error, "length", "max |r_i - r_exact(s_i)| over nodes", false,
+          order};
+}
+
+// spread_order: 2 where H is only conserved up to the discretisation error; empty where it is
+// conserved to round-off (n = 0 for the end-moment circle).
+std::vector<MetricSpec> noether_metrics(bool has_exact_h, std::optional<double> spread_order = 2.0) {
   std::vector<MetricSpec> metrics{{"H_spread", MetricKind::Invariant, "",
-                                   "max |H(s) - mean H| / natural scale (PHYSICS.md §1.4)", false, 2.0}};
+                                   "max |H(s) - mean H| / natural scale (PHYSICS.md §1.4)", false,
+                                   spread_order}};
   if (has_exact_h)
     metrics.push_back(error_metric("H_mean", "force", "mean of H(s) vs the closed-form H", true));
   return metrics;
@@ -326,12 +351,12 @@ void register_elastica_cases(Registry& registry) {
     for (double degrees : {10.0, 60.0, 120.0, 170.0}) {
       const std::string motion = fmt::format("pinned-pinned-{:g}", degrees);
       auto metrics = std::vector<MetricSpec>{
-          error_metric("shape_max_error", "length", "max |r_i - r_exact(s_i)| over nodes", false),
+          shape_error_metric(),
           error_metric("y_M", "length", "midspan deflection vs L k/K", true),
           error_metric("kappa_M", "1/length", "|midspan curvature| vs 4kK/L", true),
           error_metric("theta0", "rad", "end rotation", true, std::nullopt),
           error_metric("shortening", "length", "end shortening vs 2L(1 - E/K)", true),
-          {"newton_iterations", MetricKind::Diagnostic, "", "Newton iterations (all load steps)", false, std::nullopt}};
+          kNewtonIterations};
       for (auto& m : noether_metrics(true)) metrics.push_back(m);
       registry.add(make_case(
           fmt::format("elastica/{}/{}", motion, id), "elastica/" + motion,
@@ -345,12 +370,12 @@ void register_elastica_cases(Registry& registry) {
     }
     {
       auto metrics = std::vector<MetricSpec>{
-          error_metric("shape_max_error", "length", "max |r_i - r_exact(s_i)| over nodes", false),
+          shape_error_metric(),
           error_metric("y_M", "length", "midspan deflection", true),
           error_metric("kappa_M", "1/length", "|midspan curvature|", true),
           error_metric("theta0", "rad", "end rotation", true, std::nullopt),
           error_metric("reaction_P", "force", "reaction at the displaced pin vs 4K^2 EI/L^2", true),
-          {"newton_iterations", MetricKind::Diagnostic, "", "Newton iterations (all load steps)", false, std::nullopt}};
+          kNewtonIterations};
       for (auto& m : noether_metrics(true)) metrics.push_back(m);
       registry.add(make_case(
           fmt::format("elastica/pinned-displacement/{}", id), "elastica/pinned-displacement",
@@ -367,8 +392,8 @@ void register_elastica_cases(Registry& registry) {
           error_metric("tip_w", "length", "vertical tip deflection (Mattiasson 1981 Table 1)", true),
           error_metric("tip_u", "length", "horizontal tip displacement", true),
           error_metric("tip_phi", "rad", "tip rotation", true),
-          error_metric("shape_max_error", "length", "max |r_i - r_exact(s_i)| over nodes", false),
-          {"newton_iterations", MetricKind::Diagnostic, "", "Newton iterations (all load steps)", false, std::nullopt}};
+          shape_error_metric(),
+          kNewtonIterations};
       for (auto& m : noether_metrics(true)) metrics.push_back(m);
       registry.add(make_case(
           fmt::format("elastica/{}/{}", motion, id), "elastica/" + motion,
@@ -378,8 +403,7 @@ void register_elastica_cases(Registry& registry) {
           "sqrt(alpha) = K(k) - F(psi0, k), tip displacements by incomplete elliptic integrals; "
           "H = P sin(phi_L)",
           kMattiassonCitation,
-          {make_parameter("L", 1.0, 0.0, 1e6, true, false, "length", "rod length"),
-           make_parameter("EI", 1.0, 0.0, 1e12, true, false, "force length^2", "bending stiffness"),
+          {length_parameter(), stiffness_parameter(),
            make_parameter("alpha", alpha, 0.0, 100.0, true, false, "", "load parameter P L^2 / EI")},
           elastica_level_plan(motion, id), metrics,
           [scheme](const Parameters& p, double level) { return run_mattiasson_level(scheme, p, level); }));
@@ -388,18 +412,15 @@ void register_elastica_cases(Registry& registry) {
       auto metrics = std::vector<MetricSpec>{
           error_metric("tip_position", "length", "|r(L)| vs the closed-circle value (0 for one turn)",
                        false, std::nullopt),
-          error_metric("shape_max_error", "length", "max |r_i - r_exact(s_i)| over nodes", false,
-                       scheme == e2d::Scheme::Polygon ? std::optional<double>(2.0) : std::nullopt)};
-      for (auto& m : noether_metrics(true)) metrics.push_back(m);
-      metrics[2].theoretical_order = std::nullopt;  // H_spread: round-off for both (n = 0)
+          shape_error_metric(scheme == e2d::Scheme::Polygon ? std::optional<double>(2.0) : std::nullopt)};
+      for (auto& m : noether_metrics(true, std::nullopt)) metrics.push_back(m);
       registry.add(make_case(
           fmt::format("elastica/roll-up/{}", id), "elastica/roll-up",
           fmt::format("cantilever rolled into a full circle by an end moment, {}", id), scheme,
           "Cantilever clamped at s = 0 with a dead end moment M = 2 pi EI/L (turns = 1): an exact circle.",
           "theta = M s/EI, x = (EI/M) sin(Ms/EI), y = (EI/M)(1 - cos(Ms/EI)); H = M^2/(2EI)",
           "Exact circle under a pure end moment (Euler); PHYSICS.md §3.4",
-          {make_parameter("L", 1.0, 0.0, 1e6, true, false, "length", "rod length"),
-           make_parameter("EI", 1.0, 0.0, 1e12, true, false, "force length^2", "bending stiffness"),
+          {length_parameter(), stiffness_parameter(),
            make_parameter("turns", 1.0, 0.0, 1.0, true, false, "", "M L / (2 pi EI)")},
           elastica_level_plan("roll-up", id), metrics,
           [scheme](const Parameters& p, double level) { return run_roll_up_level(scheme, p, level); }));
