@@ -55,6 +55,11 @@ const Registry& default_registry() {
     Registry r;
     register_pendulum_cases(r);
     register_elastica_cases(r);
+    register_eulerian_cases(r);
+    register_reissner_cases(r);
+    register_superhelix_cases(r);
+    register_buckling_cases(r);
+    register_contact_cases(r);
     return r;
   }();
   return registry;

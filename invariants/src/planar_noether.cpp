@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
@@ -72,24 +73,48 @@ void validate(const PlanarRodSolution& solution) {
   check_array("solution.natural_curvature", solution.natural_curvature, n);
   check_array("solution.axial_force", solution.axial_force, n);
   check_array("solution.potential", solution.potential, n);
+  for (const auto& [name, value] : {std::pair{"solution.axial_stiffness", solution.axial_stiffness},
+                                    std::pair{"solution.shear_stiffness", solution.shear_stiffness}})
+    if (!(value > 0.0))
+      throw InputError(name, std::string("invalid parameter '") + name + "' = " + format_value(value) +
+                                 ": must be in (0, +inf] (+inf = rigid)");
+  if (std::isfinite(solution.shear_stiffness)) check_array("solution.shear_force", solution.shear_force, n);
 }
+
+// 1/EA and 1/GA (exactly 0 when rigid); (R) in the header needs n.N only when GA is finite.
+struct Compliances {
+  double axial = 0.0, shear = 0.0;
+  explicit Compliances(const PlanarRodSolution& solution)
+      : axial(1.0 / solution.axial_stiffness), shear(1.0 / solution.shear_stiffness) {}
+  bool any() const { return axial != 0.0 || shear != 0.0; }
+  double energy(const PlanarRodSolution& solution, std::size_t i) const {  // (n.t)^2/2EA + (n.N)^2/2GA
+    const double nt = solution.axial_force[i];
+    const double nn = shear != 0.0 ? solution.shear_force[i] : 0.0;
+    return 0.5 * (axial * nt * nt + shear * nn * nn);
+  }
+};
 
 std::vector<double> h_unchecked(const PlanarRodSolution& solution) {
   std::vector<double> h(solution.s.size());
-  for (std::size_t i = 0; i < h.size(); ++i)
+  const Compliances compliances(solution);
+  for (std::size_t i = 0; i < h.size(); ++i) {
     h[i] = planar_noether_density(solution.bending_stiffness[i], solution.kappa[i],
                                   solution.natural_curvature[i], solution.axial_force[i],
                                   solution.potential[i]);
+    if (compliances.any()) h[i] += compliances.energy(solution, i);  // (R)
+  }
   return h;
 }
 
 double natural_scale_unchecked(const PlanarRodSolution& solution) {
   double scale = 0.0;
+  const Compliances compliances(solution);
   for (std::size_t i = 0; i < solution.s.size(); ++i) {
     const double k = solution.kappa[i];
     const double kh = solution.natural_curvature[i];
-    const double term = 0.5 * solution.bending_stiffness[i] * (k * k + kh * kh) +
-                        std::abs(solution.axial_force[i]) + std::abs(solution.potential[i]);
+    double term = 0.5 * solution.bending_stiffness[i] * (k * k + kh * kh) +
+                  std::abs(solution.axial_force[i]) + std::abs(solution.potential[i]);
+    if (compliances.any()) term += compliances.energy(solution, i);
     if (term > scale) scale = term;
   }
   return scale;

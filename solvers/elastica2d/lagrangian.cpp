@@ -7,6 +7,7 @@
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
 #include "rodvv/solvers/elastica2d/arc_geometry.hpp"
+#include "rodvv/solvers/elastica2d/compliance.hpp"
 
 namespace rodvv::solvers::elastica2d {
 
@@ -31,6 +32,8 @@ DiscreteLagrangian::DiscreteLagrangian(const Problem& problem, const Discretisat
   validate(discretisation);
   h_ = problem.length / static_cast<double>(n_);
   const double h = h_;
+  axial_compliance_ = 1.0 / problem.axial_stiffness;  // exactly 0 for +infinity
+  shear_compliance_ = 1.0 / problem.shear_stiffness;
 
   node_ei_.resize(n_ + 1);
   node_khat_.resize(n_ + 1);
@@ -159,6 +162,12 @@ DiscreteLagrangian::Chord DiscreteLagrangian::chord(const Eigen::VectorXd& z,
   return c;
 }
 
+ElementCompliance DiscreteLagrangian::compliance(const Eigen::VectorXd& z, std::size_t edge) const {
+  const double a0 = z[angle(edge)];
+  const double a1 = scheme_ == Scheme::Polygon ? a0 : z[angle(edge + 1)];
+  return element_compliance(scheme_, a0, a1, axial_compliance_, shear_compliance_);
+}
+
 Eigen::Matrix2d DiscreteLagrangian::potential_hessian(double px, double py) const {
   const Potential& v = problem_.potential;
   if (v.hessian) return v.hessian(px, py);
@@ -192,6 +201,10 @@ double DiscreteLagrangian::value(const Eigen::VectorXd& z) const {
   for (std::size_t i = 0; i < n_; ++i) {
     const Chord c = chord(z, i);
     l += z[nx(i)] * (z[x(i + 1)] - z[x(i)] - c.g.x()) + z[ny(i)] * (z[y(i + 1)] - z[y(i)] - c.g.y());
+    if (compliant()) {
+      const Eigen::Vector2d n(z[nx(i)], z[ny(i)]);
+      l -= 0.5 * h_ * n.dot(compliance(z, i).c * n);
+    }
   }
   for (std::size_t k = 0; k < rows_.size(); ++k)
     l += z[row_index_[k]] * (z[rows_[k].dof] - rows_[k].target);
@@ -231,6 +244,13 @@ Eigen::VectorXd DiscreteLagrangian::gradient(const Eigen::VectorXd& z) const {
     g[x(i)] -= n.x();
     g[y(i)] -= n.y();
     for (int k = 0; k < arity; ++k) g[chord_angle(i, k)] -= n.dot(c.d[k]);
+    if (compliant()) {  // - h/2 n^T C n
+      const ElementCompliance e = compliance(z, i);
+      const Eigen::Vector2d cn = h_ * (e.c * n);
+      g[nx(i)] -= cn.x();
+      g[ny(i)] -= cn.y();
+      for (int k = 0; k < arity; ++k) g[chord_angle(i, k)] -= 0.5 * h_ * n.dot(e.d[k] * n);
+    }
   }
   for (std::size_t k = 0; k < rows_.size(); ++k) {
     g[row_index_[k]] += z[rows_[k].dof] - rows_[k].target;
@@ -276,6 +296,20 @@ Eigen::SparseMatrix<double> DiscreteLagrangian::hessian(const Eigen::VectorXd& z
       sym(ny(i), chord_angle(i, k), -c.d[k].y());
       for (int l = 0; l < arity; ++l)
         triplets.emplace_back(idx(chord_angle(i, k)), idx(chord_angle(i, l)), -n.dot(c.dd[k][l]));
+    }
+    if (compliant()) {  // second derivatives of - h/2 n^T C(angles) n
+      const ElementCompliance e = compliance(z, i);
+      triplets.emplace_back(idx(nx(i)), idx(nx(i)), -h_ * e.c(0, 0));
+      sym(nx(i), ny(i), -h_ * e.c(0, 1));
+      triplets.emplace_back(idx(ny(i)), idx(ny(i)), -h_ * e.c(1, 1));
+      for (int k = 0; k < arity; ++k) {
+        const Eigen::Vector2d dn = h_ * (e.d[k] * n);
+        sym(nx(i), chord_angle(i, k), -dn.x());
+        sym(ny(i), chord_angle(i, k), -dn.y());
+        for (int l = 0; l < arity; ++l)
+          triplets.emplace_back(idx(chord_angle(i, k)), idx(chord_angle(i, l)),
+                                -0.5 * h_ * n.dot(e.dd[k][l] * n));
+      }
     }
   }
   for (std::size_t k = 0; k < rows_.size(); ++k) sym(row_index_[k], rows_[k].dof, 1.0);

@@ -143,6 +143,10 @@ PlanarRodSolution fill_solution(const DiscreteLagrangian& lag, const VectorXd& z
                   &sol.axial_force})
     v->assign(nodes, 0.0);
   sol.edge_axial_force.assign(n, 0.0);
+  sol.edge_shear_force.assign(n, 0.0);
+  sol.shear_force.assign(nodes, 0.0);
+  sol.axial_stiffness = p.axial_stiffness;
+  sol.shear_stiffness = p.shear_stiffness;
 
   for (std::size_t i = 0; i <= n; ++i) {
     sol.s[i] = i == n ? p.length : static_cast<double>(i) * h;
@@ -203,12 +207,14 @@ PlanarRodSolution fill_solution(const DiscreteLagrangian& lag, const VectorXd& z
     edge_force[i] = Eigen::Vector2d(z[lag.nx(i)], z[lag.ny(i)]);
     const double angle = polygon ? a(i) : 0.5 * (a(i) + a(i + 1));
     sol.edge_axial_force[i] = edge_force[i].x() * std::cos(angle) + edge_force[i].y() * std::sin(angle);
+    sol.edge_shear_force[i] = -edge_force[i].x() * std::sin(angle) + edge_force[i].y() * std::cos(angle);
   }
   for (std::size_t i = 1; i < n; ++i) {
     const Eigen::Vector2d f = 0.5 * (edge_force[i - 1] + edge_force[i]);
     sol.force_x[i] = f.x();
     sol.force_y[i] = f.y();
     sol.axial_force[i] = 0.5 * (sol.edge_axial_force[i - 1] + sol.edge_axial_force[i]);
+    sol.shear_force[i] = 0.5 * (sol.edge_shear_force[i - 1] + sol.edge_shear_force[i]);
   }
   Eigen::Vector2d f0 = edge_force[0], f1 = edge_force[n - 1];
   if (p.potential.active()) {  // n_0 = n(0) + (h/2) grad V(r_0);  n(L) = n_{N-1} + (h/2) grad V(r_N)
@@ -221,6 +227,8 @@ PlanarRodSolution fill_solution(const DiscreteLagrangian& lag, const VectorXd& z
   sol.force_y[n] = f1.y();
   sol.axial_force[0] = f0.x() * std::cos(sol.theta[0]) + f0.y() * std::sin(sol.theta[0]);
   sol.axial_force[n] = f1.x() * std::cos(sol.theta[n]) + f1.y() * std::sin(sol.theta[n]);
+  sol.shear_force[0] = -f0.x() * std::sin(sol.theta[0]) + f0.y() * std::cos(sol.theta[0]);
+  sol.shear_force[n] = -f1.x() * std::sin(sol.theta[n]) + f1.y() * std::cos(sol.theta[n]);
   return sol;
 }
 

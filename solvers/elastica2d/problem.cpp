@@ -58,10 +58,19 @@ void validate_end(const RodEnd& end, const std::string& prefix) {
                                             ".support': must be Free, Pinned, Clamped or Sliding");
 }
 
+// (0, +infinity]: +infinity is the rigid (inextensible or unshearable) limit; NaN is rejected.
+void require_stiffness(const char* name, double value) {
+  if (value > 0.0) return;
+  throw InputError(name, std::string("invalid parameter '") + name + "' = " + format_value(value) +
+                             ": must be in (0, +inf] (+inf = rigid)");
+}
+
 }  // namespace
 
 void validate(const Problem& problem) {
   require_positive("length", problem.length);
+  require_stiffness("axial_stiffness", problem.axial_stiffness);
+  require_stiffness("shear_stiffness", problem.shear_stiffness);
   validate_end(problem.start, "start");
   validate_end(problem.end, "end");
   const Potential& v = problem.potential;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "case_test_support.hpp"
 
@@ -30,8 +31,10 @@ INSTANTIATE_TEST_SUITE_P(AllElasticaCases, ElasticaCase, ::testing::ValuesIn(rod
                          });
 
 TEST(ElasticaCatalogue, HasBothSchemesForEveryProblem) {
-  // 4 columns + displacement control + 4 cantilevers + roll-up + tapered + curved, x 2 schemes.
-  EXPECT_EQ(rodvv::testing::case_names_of_family("elastica").size(), 24u);
+  // 4 columns + displacement control + 4 cantilevers + roll-up + tapered + curved, x 2 schemes;
+  // + 4 Euler critical-load cases (buckling_cases.cpp) x 2 schemes; + heavy cantilever x 2 schemes;
+  // + 3 Reissner cases (reissner_cases.cpp) x 2 schemes.
+  EXPECT_EQ(rodvv::testing::case_names_of_family("elastica").size(), 40u);
 }
 
 // The arcs are exact for the rolled-up circle; the polygon is only second order: under the arcs'
@@ -51,6 +54,39 @@ TEST(ElasticaGatesHaveTeeth, TaperedRodViolatesConservationButMatchesPrediction)
   EXPECT_FALSE(result.passed());
   EXPECT_GT(*result.gates.front().measured, 0.05);  // H moves by O(0.1) along the rod
   EXPECT_TRUE(run_default(named("elastica/tapered/arcs")).passed());
+}
+
+// The cases without a closed form are gated against the shooting solution: the arcs' bounds
+// (measured x 2) reject the polygon, whose shape error is 4.4x (heavy cantilever) to 2.2x
+// (tapered) larger, and a fourth-order claim fails the order window.
+TEST(ElasticaShootingReference, PolygonUnderArcsBoundsFails) {
+  for (const std::string motion : {"heavy-cantilever", "tapered"}) {
+    Case wrong = named("elastica/" + motion + "/arcs");
+    wrong.run_level = named("elastica/" + motion + "/polygon").run_level;
+    EXPECT_FALSE(run_default(wrong).passed()) << motion;
+  }
+  Case fourth = named("elastica/heavy-cantilever/arcs");
+  fourth.gates = {order_gate("shape_max_error", 4.0, "wrong claim")};
+  EXPECT_FALSE(run_default(fourth).passed());
+}
+
+// The shooting reference is a solution of the continuous problem: the discrete shape converges to
+// it at order 2 with no floor, down to 1.5e-7 at N = 1024 (measured), i.e. the reference error
+// (~1e-12) is invisible; and the heavy cantilever's H, potential included, converges at order 2.
+TEST(ElasticaShootingReference, ErrorFallsAsHSquaredToFineLevels) {
+  const std::vector<double> levels{64, 256, 1024};
+  const auto result = run_sweep(named("elastica/heavy-cantilever/arcs"),
+                                named("elastica/heavy-cantilever/arcs").info.parameters, levels);
+  ASSERT_EQ(result.levels.size(), 3u);
+  const auto error_at = [&](std::size_t i, const std::string& metric) {
+    return *result.levels[i].metrics.at(metric).error;
+  };
+  for (const std::string metric : {"shape_max_error", "H_spread"}) {
+    // Two factors of 4 in h: 16^2 = 256 in error; order within [1.9, 2.1] -> ratio in [194, 337].
+    const double ratio = error_at(0, metric) / error_at(2, metric);
+    EXPECT_GT(ratio, 194.0) << metric;
+    EXPECT_LT(ratio, 337.0) << metric;
+  }
 }
 
 // Claiming fourth order for a second-order discretisation fails the order window.

@@ -9,12 +9,19 @@
 //   elastica/mattiasson-<alpha>/<scheme>     clamped-free cantilever, vertical dead tip load
 //   elastica/roll-up/<scheme>                cantilever rolled into a full circle by M = 2 pi EI/L
 //   elastica/tapered/<scheme>, elastica/curved/<scheme>
+//                                            no closed form: the shape is compared with the shooting
+//                                            solution (solvers/elastica2d/shooting.hpp, RKF78 at 1e-13);
 //                                            H is not conserved when EI or kappa_hat depend on s: the
 //                                            measured H(s) - H(0) must match the predicted integral
+//   elastica/heavy-cantilever/<scheme>       cantilever under its own weight (potential V = w y):
+//                                            shape vs shooting, H (with V) constant up to O(h^2)
 //
 // The solver never sees the reference: loads and supports are the problem's data, the initial
 // guess is a generic first-mode shape whose amplitude follows from the load alone.
 #include <cmath>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -28,6 +35,7 @@
 #include "rodvv/invariants/planar_noether.hpp"
 #include "rodvv/references/elastica.hpp"
 #include "rodvv/solvers/elastica2d/continuation.hpp"
+#include "rodvv/solvers/elastica2d/shooting.hpp"
 #include "rodvv/solvers/elastica2d/solve_static.hpp"
 
 namespace rodvv::harness {
@@ -259,32 +267,91 @@ LevelOutput run_roll_up_level(e2d::Scheme scheme, const Parameters& parameters, 
   return output;
 }
 
-// ---- tapered and curved: predicted drift of H -----------------------------------------------
+// ---- shooting reference (cases without a closed form) -----------------------------------------
+
+// The shooting solution of a problem, sampled on a level's nodes. Newton runs once per parameter
+// set: its converged initial data are cached (keyed by the parameter values), and each level only
+// integrates them once more with N + 1 samples (~1 ms). The first guess comes from the discrete
+// solution at N = 64 (arcs), which puts the shooting on the same branch as the solver under test.
+class ShootingReference {
+ public:
+  PlanarRodSolution sampled(const e2d::Problem& problem, const std::vector<double>& key, std::size_t n,
+                            std::size_t load_steps) {
+    e2d::ShootingGuess guess;
+    {
+      const std::lock_guard lock(mutex_);
+      auto found = converged_.find(key);
+      if (found == converged_.end()) {
+        e2d::SolverOptions options;
+        options.load_steps = load_steps;
+        const auto discrete = e2d::solve_static(problem, {e2d::Scheme::Arcs, 64}, options);
+        const auto solution = e2d::solve_shooting(problem, sample_options(64),
+                                                  e2d::shooting_guess_from(discrete, problem));
+        found = converged_.emplace(key, e2d::shooting_guess_from(solution, problem)).first;
+      }
+      guess = found->second;
+    }
+    return e2d::solve_shooting(problem, sample_options(n), guess);
+  }
+
+ private:
+  static e2d::ShootingOptions sample_options(std::size_t n) {
+    e2d::ShootingOptions options;  // RKF78 at abs = rel = 1e-13: errors ~1e-12, far below h^2
+    options.sample_points = n;
+    return options;
+  }
+  std::mutex mutex_;
+  std::map<std::vector<double>, e2d::ShootingGuess> converged_;
+};
+
+// Tip and node-by-node shape errors against the shooting solution on the same nodes, and the
+// overlay plot.
+void add_shooting_comparison(LevelOutput& output, const PlanarRodSolution& solution,
+                             const PlanarRodSolution& reference) {
+  output.metrics["tip_x"] = error_sample(solution.x.back(), reference.x.back());
+  output.metrics["tip_y"] = error_sample(solution.y.back(), reference.y.back());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < solution.nodes(); ++i)
+    worst = std::max(worst, std::hypot(solution.x[i] - reference.x[i], solution.y[i] - reference.y[i]));
+  output.metrics["shape_max_error"] = {worst, 0.0, worst};
+  output.series.push_back(thin_series("shape|computed", "x", "y", solution.x, solution.y));
+  output.series.push_back(thin_series("shape|shooting", "x", "y", reference.x, reference.y));
+}
+
+// ---- tapered and curved: shape vs shooting, predicted drift of H ---------------------------------
 
 enum class Variation { Tapered, Curved };
 
-LevelOutput run_drift_level(Variation variation, e2d::Scheme scheme, const Parameters& parameters,
-                            double level) {
-  const double L = 1.0, P = parameter_value(parameters, "P");
-  const double slope = parameter_value(parameters, "gradient");
+e2d::Problem drift_problem(Variation variation, double P, double slope) {
   e2d::Problem problem;
-  problem.length = L;
-  std::function<double(double)> d_ei, d_kappa_hat;
-  if (variation == Variation::Tapered) {
+  problem.length = 1.0;
+  if (variation == Variation::Tapered)
     problem.bending_stiffness = [slope](double s) { return 1.0 + slope * s; };
-    d_ei = [slope](double) { return slope; };
-  } else {
+  else
     problem.natural_curvature = [slope](double s) { return 0.3 + slope * s; };
-    d_kappa_hat = [slope](double) { return slope; };
-  }
   problem.start.support = e2d::Support::Clamped;
   problem.end.load.force_y = -P;
+  return problem;
+}
+
+LevelOutput run_drift_level(Variation variation, e2d::Scheme scheme, const Parameters& parameters,
+                            double level, ShootingReference& shooting) {
+  const double P = parameter_value(parameters, "P");
+  const double slope = parameter_value(parameters, "gradient");
+  const e2d::Problem problem = drift_problem(variation, P, slope);
+  std::function<double(double)> d_ei, d_kappa_hat;
+  if (variation == Variation::Tapered)
+    d_ei = [slope](double) { return slope; };
+  else
+    d_kappa_hat = [slope](double) { return slope; };
   e2d::SolverOptions options;
   options.load_steps = 2;
-  const PlanarRodSolution solution = e2d::solve_static(problem, {scheme, element_count(level)}, options);
+  const std::size_t n = element_count(level);
+  const PlanarRodSolution solution = e2d::solve_static(problem, {scheme, n}, options);
 
   const auto check = invariants::planar_noether_drift_check(solution, d_ei, d_kappa_hat);
   LevelOutput output;
+  add_shooting_comparison(output, solution, shooting.sampled(problem, {P, slope}, n, options.load_steps));
   // Error of the measured drift H(s) - H(0) against its predicted integral (PHYSICS.md §1.3).
   output.metrics["drift_residual"] = {check.max_abs_residual, 0.0, check.max_abs_residual};
   output.metrics["H_drift"] = {check.max_abs_drift, std::nullopt, std::nullopt};
@@ -294,6 +361,36 @@ LevelOutput run_drift_level(Variation variation, e2d::Scheme scheme, const Param
   for (std::size_t i = 0; i < h.size(); ++i) measured[i] = h[i] - h.front();
   output.series.push_back(thin_series("H(s) - H(0)|measured", "s", "H(s) - H(0)", solution.s, measured));
   output.series.push_back(thin_series("H(s) - H(0)|predicted", "s", "H(s) - H(0)", solution.s, predicted));
+  return output;
+}
+
+// ---- heavy cantilever: a potential, shape vs shooting ----------------------------------------------
+
+// Clamped horizontally at s = 0, free end, own weight w per unit length: V(x, y) = w y, f = -w e_y
+// (L = EI = 1, so w = w L^3 / EI).
+e2d::Problem heavy_cantilever_problem(double w) {
+  e2d::Problem problem;
+  problem.length = 1.0;
+  problem.start.support = e2d::Support::Clamped;
+  problem.potential.value = [w](double, double y) { return w * y; };
+  problem.potential.gradient = [w](double, double) { return Eigen::Vector2d(0.0, w); };
+  problem.potential.hessian = [](double, double) { return Eigen::Matrix2d::Zero().eval(); };
+  return problem;
+}
+
+LevelOutput run_heavy_level(e2d::Scheme scheme, const Parameters& parameters, double level,
+                            ShootingReference& shooting) {
+  const double w = parameter_value(parameters, "w");
+  const e2d::Problem problem = heavy_cantilever_problem(w);
+  e2d::SolverOptions options;
+  options.load_steps = 4;
+  const std::size_t n = element_count(level);
+  const PlanarRodSolution solution = e2d::solve_static(problem, {scheme, n}, options);
+  LevelOutput output;
+  add_shooting_comparison(output, solution, shooting.sampled(problem, {w}, n, options.load_steps));
+  output.metrics["newton_iterations"] = {double(solution.iterations), std::nullopt, std::nullopt};
+  add_noether_metrics(output, solution, std::nullopt);
+  output.series.push_back(thin_series("tension n.t", "s", "n.t", solution.s, solution.axial_force));
   return output;
 }
 
@@ -330,6 +427,11 @@ const MetricSpec kNewtonIterations{"newton_iterations", MetricKind::Diagnostic, 
 MetricSpec shape_error_metric(std::optional<double> order = 2.0) {
   return {"shape_max_error", MetricKind::Error, "length", "max |r_i - r_exact(s_i)| over nodes", false,
           order};
+}
+
+MetricSpec shooting_shape_metric() {
+  return {"shape_max_error", MetricKind::Error, "length",
+          "max |r_i - r_shooting(s_i)| over nodes (shooting reference)", false, 2.0};
 }
 
 // spread_order: 2 where H is only conserved up to the discretisation error; empty where it is
@@ -428,29 +530,58 @@ void register_elastica_cases(Registry& registry) {
     for (Variation variation : {Variation::Tapered, Variation::Curved}) {
       const bool tapered = variation == Variation::Tapered;
       const std::string motion = tapered ? "tapered" : "curved";
+      auto shooting = std::make_shared<ShootingReference>();
       registry.add(make_case(
           fmt::format("elastica/{}/{}", motion, id), "elastica/" + motion,
-          fmt::format("{} cantilever: measured H(s) drift vs predicted, {}",
+          fmt::format("{} cantilever: shape vs shooting, measured H(s) drift vs predicted, {}",
                       tapered ? "tapered (EI = 1 + g s)" : "naturally curved (kappa_hat = 0.3 + g s)", id),
           scheme,
           tapered ? "Cantilever with bending stiffness EI(s) = 1 + g s under a vertical dead tip load P: "
                     "the Lagrangian depends on s, so H is not conserved."
                   : "Cantilever with natural curvature kappa_hat(s) = 0.3 + g s under a vertical dead tip "
                     "load P: the Lagrangian depends on s, so H is not conserved.",
-          tapered ? "dH/ds = -1/2 EI'(s) theta'^2 (PHYSICS.md §1.3(a); the slides' sign is wrong)"
-                  : "dH/ds = +EI kappa_hat'(s) (theta' - kappa_hat) (PHYSICS.md §1.3(b); the slides' "
-                    "sign is wrong)",
+          std::string("shape: shooting solution of the same boundary-value problem (RKF78 at abs = rel = "
+                      "1e-13, Newton with variational equations; errors ~1e-12); ") +
+              (tapered ? "dH/ds = -1/2 EI'(s) theta'^2 (PHYSICS.md §1.3(a); the slides' sign is wrong)"
+                       : "dH/ds = +EI kappa_hat'(s) (theta' - kappa_hat) (PHYSICS.md §1.3(b); the slides' "
+                         "sign is wrong)"),
           "Noether's theorem with explicit s-dependence, dH/ds = -dL/ds; PHYSICS.md §1.3",
           {make_parameter("P", 3.0, 0.0, 1e3, true, false, "force", "tip load (L = 1)"),
            make_parameter("gradient", tapered ? 0.5 : 0.2, -0.9, 10.0, true, false, "",
                           tapered ? "g in EI = 1 + g s" : "g in kappa_hat = 0.3 + g s")},
           elastica_level_plan(motion, id),
-          {error_metric("drift_residual", "force",
+          {error_metric("tip_x", "length", "tip x vs the shooting solution", true),
+           error_metric("tip_y", "length", "tip y vs the shooting solution", true),
+           shooting_shape_metric(),
+           error_metric("drift_residual", "force",
                         "max |(H(s) - H(0)) - integral of the predicted dH/ds| over nodes", false),
            {"H_drift", MetricKind::Diagnostic, "force", "max |H(s) - H(0)|: how far H moves", false,
             std::nullopt}},
-          [variation, scheme](const Parameters& p, double level) {
-            return run_drift_level(variation, scheme, p, level);
+          [variation, scheme, shooting](const Parameters& p, double level) {
+            return run_drift_level(variation, scheme, p, level, *shooting);
+          }));
+    }
+    {
+      auto shooting = std::make_shared<ShootingReference>();
+      auto metrics = std::vector<MetricSpec>{
+          error_metric("tip_x", "length", "tip x vs the shooting solution", true),
+          error_metric("tip_y", "length", "tip y vs the shooting solution", true),
+          shooting_shape_metric(), kNewtonIterations};
+      for (auto& m : noether_metrics(false)) metrics.push_back(m);
+      registry.add(make_case(
+          fmt::format("elastica/heavy-cantilever/{}", id), "elastica/heavy-cantilever",
+          fmt::format("cantilever bent by its own weight (potential V = w y), {}", id), scheme,
+          "Cantilever clamped horizontally at s = 0, free at s = L, under its own weight w per unit "
+          "length (potential V = w y, f = -w e_y), large deflection: n' = grad V, no closed form.",
+          "shooting solution of the same boundary-value problem (RKF78 at abs = rel = 1e-13, Newton "
+          "with variational equations; errors ~1e-12); H = 1/2 EI kappa^2 + n.t - V constant "
+          "(PHYSICS.md §0)",
+          "Noether invariant with a potential, PHYSICS.md §0; shooting: Keller, Numerical Methods for "
+          "Two-Point Boundary-Value Problems (1968) ch. 2",
+          {make_parameter("w", 5.0, 0.0, 1e3, true, false, "", "weight parameter w L^3 / EI (L = EI = 1)")},
+          elastica_level_plan("heavy-cantilever", id), metrics,
+          [scheme, shooting](const Parameters& p, double level) {
+            return run_heavy_level(scheme, p, level, *shooting);
           }));
     }
   }

@@ -14,6 +14,7 @@
 // (consistent to O(h^2), PHYSICS.md §1.4) and also fills the edge arrays (N values, edge i joins
 // nodes i and i+1); a continuous (shooting) solver leaves the edge arrays empty.
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,15 @@ struct PlanarRodSolution {
   std::vector<double> axial_force;        // n.t at nodes
 
   std::vector<double> edge_axial_force;   // discrete solvers: n.t on edges (Lagrange multiplier or EA strain)
+
+  // Extensible / shearable (planar Reissner) rods: t = (cos theta, sin theta) is the cross-section
+  // director, r' = (1 + n.t / EA) t + (n.N / GA) N with N = e_z x t. +infinity = rigid (elastica).
+  // shear_force n.N at nodes (and edges): filled by the discrete solver; may be left empty when
+  // shear_stiffness is infinite (it then does not enter H).
+  double axial_stiffness = std::numeric_limits<double>::infinity();  // EA
+  double shear_stiffness = std::numeric_limits<double>::infinity();  // GA
+  std::vector<double> shear_force;       // n.N at nodes
+  std::vector<double> edge_shear_force;  // discrete solvers: n.N on edges
 
   std::size_t iterations = 0;  // Newton / shooting iterations of the final solve
   double residual = 0.0;       // final residual norm

@@ -30,5 +30,10 @@ const Registry& default_registry();
 
 void register_pendulum_cases(Registry& registry);
 void register_elastica_cases(Registry& registry);
+void register_eulerian_cases(Registry& registry);  // eulerian1d/*: reference-map solid, barriers
+void register_reissner_cases(Registry& registry);  // elastica/reissner-*: extensible, shearable rod
+void register_superhelix_cases(Registry& registry);  // superhelix/*: 3-D Super-Helix rods
+void register_buckling_cases(Registry& registry);  // elastica/euler-*: Euler loads, eigenproblem
+void register_contact_cases(Registry& registry);  // elastica-contact/*: cavity, soft walls, prop
 
 }  // namespace rodvv::harness

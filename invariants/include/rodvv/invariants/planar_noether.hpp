@@ -15,13 +15,26 @@
 // Note: with BOTH EI' != 0 and kappa_hat != 0 the first term is -1/2 EI' (theta' - kappa_hat)^2,
 // not -1/2 EI' theta'^2 (derivation in planar_noether.cpp).
 //
+// Extensible, shearable (planar Reissner) rod, solution.axial_stiffness EA and/or
+// solution.shear_stiffness GA finite (PHYSICS.md §1.1 compact form H = n.v + m.u - W - V, planar):
+// with r' = (1 + eps) t + gamma N, n.t = EA eps, n.N = GA gamma, m = EI (theta' - kappa_hat),
+// W = 1/2 EI (theta' - kappa_hat)^2 + 1/2 EA eps^2 + 1/2 GA gamma^2,
+//   H = n.r' + m theta' - W - V = 1/2 EI (kappa^2 - kappa_hat^2) + n.t + (n.t)^2 / (2 EA)
+//       + (n.N)^2 / (2 GA) - V                                                           (R)
+// (n.r' = n.t + EA eps^2 + GA gamma^2). Here t is the cross-section director, so n.t is the
+// "tension" n.d3 of §1.1, not the force along r'. The functions below use (R) whenever EA or GA is
+// finite (the extra terms vanish for the elastica, whose results are unchanged), and (*) still
+// gives dH/ds because EA, GA are constant.
+//
 // All functions are pure functions of a PlanarRodSolution (rodvv/common/planar_rod.hpp). They read
 // s, kappa (= theta'), bending_stiffness, natural_curvature, axial_force (n.t) and potential; every
-// one of these arrays must hold nodes() values. x, y, theta, force_x/y and the edge arrays are not
-// read. Bad input throws rodvv::InputError naming the field:
+// one of these arrays must hold nodes() values; with a finite shear_stiffness also shear_force (n.N).
+// x, y, theta, force_x/y and the edge arrays are not read. Bad input throws rodvv::InputError naming
+// the field:
 //   fewer than 2 nodes ("solution.s"), an array of a different length ("solution.<field>"),
 //   a non-finite value ("solution.<field>"), s not strictly increasing ("solution.s"),
-//   EI <= 0 ("solution.bending_stiffness").
+//   EI <= 0 ("solution.bending_stiffness"), EA or GA not in (0, +inf] ("solution.axial_stiffness",
+//   "solution.shear_stiffness").
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -40,6 +53,17 @@ Scalar planar_noether_density(Scalar bending_stiffness, Scalar kappa, Scalar nat
                               Scalar axial_force, Scalar potential) {
   return Scalar(0.5) * bending_stiffness * ((kappa - natural_curvature) * (kappa + natural_curvature)) +
          axial_force - potential;
+}
+
+// H at one node of an extensible, shearable rod, formula (R) above; axial_compliance = 1/EA and
+// shear_compliance = 1/GA (0 = rigid) give back planar_noether_density exactly.
+template <class Scalar>
+Scalar planar_reissner_density(Scalar bending_stiffness, Scalar kappa, Scalar natural_curvature,
+                               Scalar axial_force, Scalar shear_force, Scalar axial_compliance,
+                               Scalar shear_compliance, Scalar potential) {
+  return planar_noether_density(bending_stiffness, kappa, natural_curvature, axial_force, potential) +
+         Scalar(0.5) * (axial_compliance * axial_force * axial_force +
+                        shear_compliance * shear_force * shear_force);
 }
 
 // dH/ds at one node, formula (*) above: -1/2 EI' (kappa - kappa_hat)^2 + EI kappa_hat' (kappa - kappa_hat).
@@ -66,7 +90,8 @@ struct HSpread {
   bool scale_is_fallback = false;  // true: natural scale was 0 (a rod with no load or bending), 1 used
 };
 
-// Natural scale of H: max_i ( 1/2 EI_i (kappa_i^2 + kappa_hat_i^2) + |n.t_i| + |V_i| ), the sum of
+// Natural scale of H: max_i ( 1/2 EI_i (kappa_i^2 + kappa_hat_i^2) + |n.t_i| + |V_i| ) (plus
+// (n.t_i)^2 / (2 EA) + (n.N_i)^2 / (2 GA) for an extensible, shearable rod), the sum of
 // the magnitudes of the terms of H, so that round-off in H is a few eps times it. (For a naturally
 // straight rod this is max_i |1/2 EI kappa^2| + |n.t| + |V|.) Returns 0 for a load- and bending-free rod.
 double planar_noether_natural_scale(const PlanarRodSolution& solution);

@@ -13,6 +13,12 @@
 //   mu_k  = multipliers of the boundary rows (prescribed x, y at ends; prescribed angle at a clamped
 //           end of the "arcs" scheme; a polygon clamp enters the bending energy instead).
 //
+// Extensible / shearable rod (finite EA or GA, problem.hpp): the mixed (Hellinger-Reissner) term
+//   L += - sum_i h/2 n_i^T C_i(angles) n_i      (compliance.hpp)
+// turns the element constraint into r_{i+1} - r_i - g_i - h C_i n_i = 0, so n_i is the element
+// force and C_i n_i its strain; the KKT matrix keeps its band (the n-n block becomes -h C_i). With
+// EA = GA = +infinity the term is absent (not merely zero), so the elastica results are unchanged.
+//
 // Unknowns. "polygon": edge angles phi_i (i < N); "arcs": node angles theta_i (i <= N), which are
 // the start angle plus the running sum of the element curvatures kappa_e = (theta_{e+1} -
 // theta_e) / h, a linear, invertible change of the reduced coordinates (theta_0, kappa_0..N-1) that
@@ -28,6 +34,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "rodvv/solvers/elastica2d/compliance.hpp"
 #include "rodvv/solvers/elastica2d/discretisation.hpp"
 #include "rodvv/solvers/elastica2d/problem.hpp"
 
@@ -67,6 +74,11 @@ class DiscreteLagrangian {
   double load_factor() const noexcept { return lambda_; }
   void set_row_target(std::size_t k, double target) noexcept { rows_[k].target = target; }
 
+  // 1/EA and 1/GA (0 when rigid); compliant() is false for the inextensible, unshearable rod.
+  double axial_compliance() const noexcept { return axial_compliance_; }
+  double shear_compliance() const noexcept { return shear_compliance_; }
+  bool compliant() const noexcept { return axial_compliance_ != 0.0 || shear_compliance_ != 0.0; }
+
   double energy(const Eigen::VectorXd& z) const;    // Pi (no constraint terms)
   double value(const Eigen::VectorXd& z) const;     // L
   Eigen::VectorXd gradient(const Eigen::VectorXd& z) const;            // grad L (the KKT residual)
@@ -94,6 +106,7 @@ class DiscreteLagrangian {
     Eigen::Vector2d dd[2][2];
   };
   Chord chord(const Eigen::VectorXd& z, std::size_t edge) const;
+  ElementCompliance compliance(const Eigen::VectorXd& z, std::size_t edge) const;
   std::size_t chord_angle(std::size_t edge, int k) const noexcept;
   int chord_arity() const noexcept { return scheme_ == Scheme::Polygon ? 1 : 2; }
   double node_weight(std::size_t i) const noexcept;
@@ -108,6 +121,7 @@ class DiscreteLagrangian {
   std::size_t offset_ = 0;
   std::size_t size_ = 0;
   double lambda_ = 1.0;
+  double axial_compliance_ = 0.0, shear_compliance_ = 0.0;
   std::vector<BendingTerm> bending_;
   std::vector<BoundaryRow> rows_;
   std::vector<std::size_t> row_index_;

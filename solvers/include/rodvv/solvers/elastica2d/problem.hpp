@@ -19,8 +19,18 @@
 // Dead loads are work terms: the end force F and couple M at s = L enter the potential energy as
 // -F.r(L) - M theta(L), those at s = 0 as -F.r(0) - M theta(0) (both are forces ON the rod). So a
 // cantilever clamped at s = 0 with an end couple M at s = L bends as theta = M s / EI.
+//
+// Extensible and shearable rod (planar Reissner / special Cosserat rod; Reissner 1972, ZAMP
+// 23:795-804; Simo & Vu-Quoc 1986, CMAME 58:79-116). With a finite axial stiffness EA and/or shear
+// stiffness GA, theta is the angle of the cross-section (director d3 = t(theta)), no longer the
+// angle of r', and
+//   r' = t + C(theta) n,   C = t t^T / EA + N N^T / GA    (N = e_z x t),
+// i.e. stretch eps = n.t / EA and shear gamma = n.N / GA (strain energy 1/2 EA eps^2 + 1/2 GA
+// gamma^2); the moment balance becomes m' + r' x n = 0. Both default to +infinity: the
+// inextensible, unshearable elastica above (bit-identical results).
 #include <Eigen/Core>
 #include <functional>
+#include <limits>
 
 namespace rodvv::solvers::elastica2d {
 
@@ -58,6 +68,9 @@ struct Problem {
   Potential potential;                                // empty = no distributed load
   RodEnd start;                                       // s = 0
   RodEnd end;                                         // s = L
+  // EA > 0 and GA > 0 (constant along the rod); +infinity = inextensible / unshearable.
+  double axial_stiffness = std::numeric_limits<double>::infinity();
+  double shear_stiffness = std::numeric_limits<double>::infinity();
 };
 
 // EI(s) and kappa_hat(s) with the defaults applied (no validation).
@@ -65,8 +78,8 @@ double bending_stiffness_at(const Problem& problem, double s);
 double natural_curvature_at(const Problem& problem, double s);
 
 // Throws rodvv::InputError naming the field ("length", "start.load.force_y", "potential.gradient",
-// ...) for L <= 0 or non-finite, non-finite prescribed values or loads, and dead loads in a
-// prescribed direction. EI(s) and kappa_hat(s) are checked where a discretisation samples them.
+// ...) for L <= 0 or non-finite, non-finite prescribed values or loads, dead loads in a
+// prescribed direction, and EA or GA not in (0, +infinity] ("axial_stiffness", "shear_stiffness"). EI(s) and kappa_hat(s) are checked where a discretisation samples them.
 void validate(const Problem& problem);
 
 }  // namespace rodvv::solvers::elastica2d

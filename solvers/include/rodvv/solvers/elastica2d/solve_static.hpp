@@ -33,6 +33,8 @@
 //   axial_force  interior: mean of the two edge axial forces; ends: n.t at the end node;
 //   edge_axial_force  n_i . t at the edge midpoint (polygon: t(phi_i); arcs: t((theta_i +
 //                theta_{i+1}) / 2));
+//   shear_force, edge_shear_force  n.N (N = e_z x t) at the same places as the axial force;
+//   axial_stiffness, shear_stiffness  EA and GA of the problem (strains: n.t / EA, n.N / GA);
 //   potential    V(x_i, y_i) (0 without a potential);
 //   iterations   Newton iterations summed over all load steps; residual = final ||grad L||_inf.
 // Failure: rodvv::SolverError (Newton iterations, last residual) when Newton does not reach the

@@ -1,0 +1,556 @@
+// The Super-Helix family (ALGORITHMS.md §1, PHYSICS.md §1.1, §3.5, §7.1): the 3-D reduced-coordinate
+// rod of solvers/superhelix against the closed forms of references/rod3d and references/elastica,
+// and the 3-D Noether invariant of invariants/noether3d.
+//
+//   superhelix/roll-up               dead end moment 2 pi EI / L about a cross-section axis: a
+//                                    circle, exact for any N (round-off gates)
+//   superhelix/helix-axial-wrench    uniform helix held by an axial wrench, with natural twist:
+//                                    exact for any N, H = closed form at every station
+//   superhelix/mattiasson-2          the planar Mattiasson cantilever solved in 3-D (rotated clamp):
+//                                    second order to the elliptic reference
+//   superhelix/heavy-cantilever      naturally curved and twisted cantilever under gravity: H(s)
+//                                    constant to the scheme's order, both H forms agree
+//   superhelix/modes                 linearised bending frequencies vs Euler-Bernoulli: from above,
+//                                    O(N^-2)
+//   superhelix/energy-decay          undamped semi-implicit Euler under gravity: monotone energy loss
+//                                    of first order in h; dense and recursive steps agree
+//   superhelix/curl-at-rest          a curl (q = q0) without loads stays exactly at rest
+//
+// The solver never sees the reference: loads, supports and natural strains are the problem's data.
+// The helix case starts Newton from a 10 % perturbation of the helix (the axial-wrench equilibrium
+// is not unique; the case checks that the discrete equilibrium IS the helix, not branch selection).
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "rodvv/harness/registry.hpp"
+#include "rodvv/harness/trajectory_metrics.hpp"
+#include "rodvv/invariants/noether3d.hpp"
+#include "rodvv/references/elastica.hpp"
+#include "rodvv/references/rod3d.hpp"
+#include "rodvv/solvers/superhelix/dynamics.hpp"
+#include "rodvv/solvers/superhelix/kinematics.hpp"
+#include "rodvv/solvers/superhelix/solution.hpp"
+#include "rodvv/solvers/superhelix/statics.hpp"
+
+namespace rodvv::harness {
+
+namespace {
+
+namespace ref = rodvv::references;
+namespace sh = rodvv::solvers::superhelix;
+constexpr double kPi = std::numbers::pi;
+constexpr double kEps = 2.220446049250313e-16;
+
+constexpr const char* kMethod =
+    "Super-Helix (Bertails et al. 2006): piecewise-constant twist and curvatures, closed-form helical "
+    "elements (singularity-free exponential form); statics by Newton (finite-difference Jacobian, "
+    "line search, load stepping); Gauss-Legendre mass quadrature (4 points per element)";
+
+std::size_t element_count(double level) { return static_cast<std::size_t>(std::llround(level)); }
+
+MetricSample error_sample(double computed, double reference) {
+  return {computed, reference, std::abs(computed - reference)};
+}
+MetricSample value_sample(double value) { return {value, 0.0, std::abs(value)}; }
+MetricSample diagnostic(double value) { return {value, std::nullopt, std::nullopt}; }
+
+MetricSpec error_metric(std::string name, std::string unit, std::string description,
+                        std::optional<double> order, bool extrapolate = false) {
+  return {std::move(name), MetricKind::Error, std::move(unit), std::move(description), extrapolate, order};
+}
+MetricSpec invariant_metric(std::string name, std::string description, std::optional<double> order = std::nullopt) {
+  return {std::move(name), MetricKind::Invariant, "", std::move(description), false, order};
+}
+MetricSpec diagnostic_metric(std::string name, std::string description) {
+  return {std::move(name), MetricKind::Diagnostic, "", std::move(description), false, std::nullopt};
+}
+
+// A general rotation for the clamp, so that no case lives in coordinate planes only.
+Mat3 tilted_frame(double tilt) {
+  return (Eigen::AngleAxisd(tilt, Vec3(0.3, -0.5, 0.8).normalized())).toRotationMatrix();
+}
+
+// H metrics of a 3-D solution: spread along the stations (relative to the term scale), the largest
+// difference between the compact and flattened forms, and (optionally) the mean vs a closed form.
+void add_noether_metrics(LevelOutput& output, const SpatialRodSolution& solution, std::optional<double> exact) {
+  const auto summary = invariants::noether3d_summary(solution);
+  const double scale = std::max(summary.scale, 1e-300);
+  output.metrics["H_spread"] = value_sample(summary.spread / scale);
+  output.metrics["H_form_difference"] = value_sample(summary.form_difference / scale);
+  if (exact)
+    output.metrics["H_mean"] = {summary.mean, *exact, std::abs(summary.mean - *exact) / std::max(std::abs(*exact), scale)};
+  output.series.push_back(thin_series("H(s)|compact", "s", "H", solution.s, invariants::noether3d_compact(solution)));
+  output.series.push_back(thin_series("H(s)|flattened", "s", "H", solution.s, invariants::noether3d_flattened(solution)));
+}
+
+std::vector<MetricSpec> noether_metric_specs(bool exact, std::optional<double> spread_order) {
+  std::vector<MetricSpec> specs{
+      invariant_metric("H_spread", "max |H(s) - mean H| / term scale at the element midpoints", spread_order),
+      invariant_metric("H_form_difference", "max |H_compact - H_flattened| / term scale (round-off)")};
+  if (exact) specs.push_back(error_metric("H_mean", "force", "|mean H - closed form| / max(|H|, term scale)", std::nullopt));
+  return specs;
+}
+
+Parameter length_parameter(double value = 1.0) {
+  return make_parameter("L", value, 0.0, 1e6, true, false, "length", "rod length");
+}
+Parameter stiffness_parameter() {
+  return make_parameter("EI", 1.0, 0.0, 1e12, true, false, "force length^2", "bending stiffness (both axes)");
+}
+
+Case make_case(std::string name, std::string title, std::string physics, std::string reference,
+               std::string citation, Parameters parameters, Resolution resolution,
+               std::vector<MetricSpec> metrics, std::vector<GateSpec> gates, LevelRunner runner) {
+  Case c;
+  c.info.name = std::move(name);
+  c.info.family = "superhelix";
+  c.info.group = c.info.name;
+  c.info.title = std::move(title);
+  c.info.physics = std::move(physics);
+  c.info.reference = std::move(reference);
+  c.info.citation = std::move(citation);
+  c.info.method = kMethod;
+  c.info.parameters = std::move(parameters);
+  c.info.resolution = std::move(resolution);
+  c.info.metrics = std::move(metrics);
+  c.gates = std::move(gates);
+  c.run_level = std::move(runner);
+  return c;
+}
+
+Resolution elements(std::vector<double> levels, std::vector<double> extended) {
+  return {"N", "number of helical elements", ResolutionScale::Count, std::move(levels), std::move(extended)};
+}
+
+GateSpec measured_bound(const std::string& metric, double at_finest, double h_finest, double order) {
+  GateSpec gate = scaled_upper_bound_gate(metric, 2.0 * at_finest / std::pow(h_finest, order), order,
+                                          GateScope::FinestLevel,
+                                          fmt::format("C = 2 x the value measured at the finest default level / h^{:g}", order));
+  gate.measured = true;
+  return gate;
+}
+
+// ---- roll-up -------------------------------------------------------------------------------------
+
+LevelOutput run_roll_up(const Parameters& p, double level) {
+  const double L = parameter_value(p, "L"), EI = parameter_value(p, "EI");
+  const double turns = parameter_value(p, "turns"), beta = parameter_value(p, "axis_angle_deg") * kPi / 180.0;
+  sh::RodModel model;
+  model.elements = element_count(level);
+  model.length = L;
+  model.stiffness = Vec3(0.7 * EI, EI, EI);
+  model.root_frame = tilted_frame(0.9);
+  model.root_position = Vec3(0.2, -0.1, 0.4);
+  const Vec3 axis = std::cos(beta) * model.root_frame.col(1) + std::sin(beta) * model.root_frame.col(2);
+  const double M = turns * 2.0 * kPi * EI / L;
+  model.end_moment = M * axis;
+  sh::StaticOptions options;
+  options.load_steps = 4;
+  options.tolerance = 1e-14;  // an exact case: iterate to the round-off floor
+  const auto result = sh::solve_static(model, options);
+  const SpatialRodSolution solution = sh::make_solution(model, result.q);
+
+  ref::EndMomentRollUp rod;
+  rod.L = L;
+  rod.EI = EI;
+  rod.M = M;
+  rod.root_position = model.root_position;
+  rod.tangent = model.root_frame.col(0);
+  rod.axis = axis;
+  double shape = 0.0;
+  for (std::size_t i = 0; i < solution.vertex_s.size(); ++i)
+    shape = std::max(shape, (solution.vertex_position[i] - ref::end_moment_roll_up_point(rod, solution.vertex_s[i]).position).norm());
+  LevelOutput output;
+  output.metrics["shape_max_error"] = value_sample(shape / L);
+  output.metrics["tip_gap"] = value_sample((solution.vertex_position.back() - model.root_position).norm() / L);
+  output.metrics["newton_iterations"] = diagnostic(double(result.iterations));
+  add_noether_metrics(output, solution, ref::end_moment_roll_up_invariant(rod));
+  return output;
+}
+
+// ---- helix under an axial wrench -----------------------------------------------------------------
+
+LevelOutput run_helix(const Parameters& p, double level) {
+  const ref::AxialWrenchHelix helix{parameter_value(p, "B"), parameter_value(p, "C"), parameter_value(p, "radius"),
+                                    parameter_value(p, "pitch_angle"), parameter_value(p, "twisting_moment")};
+  const double L = parameter_value(p, "L");
+  const auto exact = ref::axial_wrench_helix(helix);
+  const auto root = ref::axial_wrench_helix_point(helix, 0.0), tip = ref::axial_wrench_helix_point(helix, L);
+  sh::RodModel model;
+  model.elements = element_count(level);
+  model.length = L;
+  model.stiffness = Vec3(helix.C, helix.B, helix.B);
+  model.natural_strain = Vec3(exact.natural_twist, 0.0, 0.0);
+  model.root_position = root.position;
+  model.root_frame = root.frame;
+  model.end_force = tip.force;   // the axial wrench, applied as a dead end force ...
+  model.end_moment = tip.moment;  // ... and the end moment m(L) that it carries
+  sh::StaticOptions options;
+  options.tolerance = 1e-14;  // an exact case: iterate to the round-off floor
+  options.initial_q = VecX::Zero(static_cast<Eigen::Index>(3 * model.elements));
+  for (std::size_t e = 0; e < model.elements; ++e)
+    options.initial_q.segment<3>(3 * e) = 0.9 * Vec3(exact.tau, exact.kappa, 0.0);
+  const auto result = sh::solve_static(model, options);
+  const SpatialRodSolution solution = sh::make_solution(model, result.q);
+  double shape = 0.0, frame = 0.0, strain = 0.0;
+  for (std::size_t i = 0; i < solution.vertex_s.size(); ++i) {
+    const auto point = ref::axial_wrench_helix_point(helix, solution.vertex_s[i]);
+    shape = std::max(shape, (solution.vertex_position[i] - point.position).norm());
+    frame = std::max(frame, (solution.vertex_frame[i] - point.frame).cwiseAbs().maxCoeff());
+  }
+  for (const auto& u : solution.strain_u) strain = std::max(strain, (u - Vec3(exact.tau, exact.kappa, 0.0)).cwiseAbs().maxCoeff());
+  LevelOutput output;
+  output.metrics["shape_max_error"] = value_sample(shape / L);
+  output.metrics["frame_max_error"] = value_sample(frame);
+  output.metrics["strain_max_error"] = value_sample(strain / exact.darboux);
+  output.metrics["newton_iterations"] = diagnostic(double(result.iterations));
+  add_noether_metrics(output, solution, exact.H);
+  std::vector<double> x, y, xr, yr;
+  for (std::size_t i = 0; i < solution.vertex_s.size(); ++i) {
+    x.push_back(solution.vertex_position[i].x());
+    y.push_back(solution.vertex_position[i].z());
+  }
+  for (int i = 0; i <= 200; ++i) {
+    const auto point = ref::axial_wrench_helix_point(helix, L * i / 200.0);
+    xr.push_back(point.position.x());
+    yr.push_back(point.position.z());
+  }
+  output.series.push_back(thin_series("helix (x, z)|computed vertices", "x", "z", x, y));
+  output.series.push_back(thin_series("helix (x, z)|closed form", "x", "z", xr, yr));
+  return output;
+}
+
+// ---- Mattiasson cantilever in 3-D ------------------------------------------------------------
+
+LevelOutput run_mattiasson(const Parameters& p, double level) {
+  const double L = parameter_value(p, "L"), EI = parameter_value(p, "EI"), alpha = parameter_value(p, "alpha");
+  const ref::TipLoadedCantilever cantilever{L, EI, alpha * EI / (L * L)};
+  const auto tip = ref::cantilever_tip(cantilever);
+  // Clamp tangent horizontal but rotated about the vertical by 30 deg, cross-section rolled by
+  // 40 deg: the load -P e_z bends the rod in a vertical plane that is no coordinate plane of the
+  // material frame (both bending strains and the twist are unknowns).
+  const Mat3 yaw = Eigen::AngleAxisd(kPi / 6, Vec3::UnitZ()).toRotationMatrix();
+  const Mat3 roll = Eigen::AngleAxisd(40.0 * kPi / 180.0, Vec3::UnitX()).toRotationMatrix();
+  sh::RodModel model;
+  model.elements = element_count(level);
+  model.length = L;
+  model.stiffness = Vec3(0.8 * EI, EI, EI);
+  model.root_frame = yaw * roll;
+  model.end_force = Vec3(0.0, 0.0, -cantilever.P);
+  sh::StaticOptions options;
+  options.load_steps = alpha > 3.0 ? 4 : 2;
+  const auto result = sh::solve_static(model, options);
+  const sh::Kinematics kin(model, result.q);
+  const Vec3 t0 = model.root_frame.col(0);
+  const Vec3 r = kin.tip_position() - model.root_position;
+  const Vec3 t = kin.tip_frame().col(0);
+  LevelOutput output;
+  output.metrics["tip_w"] = error_sample(-r.z(), tip.w);
+  output.metrics["tip_u"] = error_sample(L - r.dot(t0), tip.u);
+  output.metrics["tip_phi"] = error_sample(std::atan2(-t.z(), t.dot(t0)), tip.phi_L);
+  output.metrics["out_of_plane"] = value_sample(std::abs(r.dot(Vec3::UnitZ().cross(t0))) / L);
+  output.metrics["newton_iterations"] = diagnostic(double(result.iterations));
+  return output;
+}
+
+// ---- heavy cantilever: H(s) ----------------------------------------------------------------------
+
+LevelOutput run_heavy(const Parameters& p, double level) {
+  const double L = parameter_value(p, "L"), EI = parameter_value(p, "EI");
+  const double weight = parameter_value(p, "weight");  // rho S g L^3 / EI
+  sh::RodModel model;
+  model.elements = element_count(level);
+  model.length = L;
+  model.stiffness = Vec3(0.6 * EI, EI, 1.4 * EI);
+  model.natural_strain = Vec3(0.8, 1.2, -0.5) / L;
+  model.root_frame = tilted_frame(0.4);
+  model.line_density = 1.0;
+  model.gravity = Vec3(0.0, 0.0, -weight * EI / (L * L * L));
+  sh::StaticOptions options;
+  options.load_steps = 2;
+  const auto result = sh::solve_static(model, options);
+  const SpatialRodSolution solution = sh::make_solution(model, result.q);
+  LevelOutput output;
+  add_noether_metrics(output, solution, std::nullopt);
+  output.metrics["newton_iterations"] = diagnostic(double(result.iterations));
+  output.metrics["tip_z"] = diagnostic(solution.vertex_position.back().z());
+  return output;
+}
+
+// ---- linearised frequencies ----------------------------------------------------------------------
+
+LevelOutput run_modes(const Parameters& p, double level) {
+  const double L = parameter_value(p, "L"), EI = parameter_value(p, "EI"), rho = parameter_value(p, "rhoS");
+  sh::RodModel model;
+  model.elements = element_count(level);
+  model.length = L;
+  model.stiffness = Vec3(EI, EI, EI);
+  model.line_density = rho;
+  const std::size_t count = std::min<std::size_t>(3, model.elements);
+  const VecX omega = sh::bending_frequencies(model, count);
+  LevelOutput output;
+  double smallest_excess = 1.0;
+  for (std::size_t n = 1; n <= 3; ++n) {
+    if (n > count) continue;  // too few elements for this mode
+    const double exact = ref::cantilever_frequency(n, EI, rho, L);
+    const double relative = (omega[static_cast<Eigen::Index>(n - 1)] - exact) / exact;
+    output.metrics[fmt::format("omega{}", n)] = {omega[static_cast<Eigen::Index>(n - 1)], exact, std::abs(relative)};
+    smallest_excess = std::min(smallest_excess, relative);
+  }
+  // Rayleigh-Ritz: every discrete frequency lies above the continuous one.
+  output.metrics["min_relative_excess"] = diagnostic(smallest_excess);
+  return output;
+}
+
+// ---- dynamics: energy decay, dense vs recursive ---------------------------------------------------
+
+LevelOutput run_energy(const Parameters& p, double dt) {
+  const double t_end = parameter_value(p, "t_end");
+  sh::RodModel model;
+  model.elements = element_count(parameter_value(p, "N"));
+  model.length = 1.0;
+  model.stiffness = Vec3(0.7, 1.0, 1.3);
+  model.natural_strain = Vec3(0.0, 0.0, 0.8);  // curved in the plane of n0 and n1 ...
+  model.line_density = 1.0;
+  model.root_frame = tilted_frame(0.3);
+  model.gravity = -parameter_value(p, "g") * model.root_frame.col(1);  // ... and loaded in that plane
+  const auto steps = static_cast<std::size_t>(std::llround(t_end / dt));
+  const auto dofs = static_cast<Eigen::Index>(3 * model.elements);
+  sh::DynamicState state{sh::natural_strain_vector(model), VecX::Zero(dofs), 0.0};
+  const VecX stiffness = sh::generalised_stiffness(model);
+  const double e0 = sh::total_energy(model, state);
+  double energy = e0, worst_increase = 0.0, worst_residual = 0.0, worst_forward = 0.0, scale = std::abs(e0);
+  std::vector<double> t{0.0}, loss{0.0};
+  for (std::size_t i = 0; i < steps; ++i) {
+    const VecX dense = sh::velocity_change(model, state, dt, sh::DynamicsPath::Dense);
+    const VecX fast = sh::velocity_change(model, state, dt, sh::DynamicsPath::Recursive);
+    // Same linear system (M + D) dv = b: the recursive dv's relative residual in the dense system
+    // (backward error, independent of the conditioning), and the forward relative difference
+    // (bounded by cond(M + D) eps; cond grows like 1/h^2 on the light local coordinates).
+    MatX system = sh::mass_matrix(sh::Kinematics(model, state.q));
+    system.diagonal() += (dt * dt + dt * model.rayleigh_stiffness) * stiffness;
+    worst_residual = std::max(worst_residual, (system * (dense - fast)).norm() / (system * dense).norm());
+    worst_forward = std::max(worst_forward, (dense - fast).lpNorm<Eigen::Infinity>() /
+                                                std::max(dense.lpNorm<Eigen::Infinity>(), 1e-300));
+    state.qdot += fast;
+    state.q += dt * state.qdot;
+    state.time += dt;
+    const double next = sh::total_energy(model, state);
+    scale = std::max(scale, std::abs(next));
+    worst_increase = std::max(worst_increase, next - energy);
+    energy = next;
+    t.push_back(state.time);
+    loss.push_back(e0 - energy);
+  }
+  LevelOutput output;
+  // The exact flow conserves E: the loss E(0) - E(t_end) is the error, O(h) for this scheme.
+  output.metrics["energy_loss"] = value_sample((e0 - energy) / scale);
+  output.metrics["max_energy_increase"] = diagnostic(worst_increase / scale);
+  output.metrics["dense_vs_recursive"] = value_sample(worst_residual);
+  output.metrics["dense_vs_recursive_forward"] = diagnostic(worst_forward);
+  output.series.push_back(thin_series("energy loss E(0) - E(t)", "t", "E(0) - E(t)", t, loss));
+  return output;
+}
+
+LevelOutput run_curl(const Parameters& p, double level) {
+  sh::RodModel model;
+  model.elements = element_count(level);
+  model.length = parameter_value(p, "L");
+  model.stiffness = Vec3(0.5, 1.0, 2.0);
+  model.natural_strain = Vec3(2.0, 5.0, -3.0) / model.length;  // a tight curl
+  model.root_frame = tilted_frame(1.1);
+  sh::DynamicState state{sh::natural_strain_vector(model), VecX::Zero(static_cast<Eigen::Index>(3 * model.elements)), 0.0};
+  const VecX q0 = state.q;
+  for (int i = 0; i < 100; ++i) {
+    state = sh::step(model, state, 1e-2, i % 2 ? sh::DynamicsPath::Dense : sh::DynamicsPath::Recursive);
+  }
+  LevelOutput output;
+  output.metrics["max_drift"] = value_sample((state.q - q0).lpNorm<Eigen::Infinity>() + state.qdot.lpNorm<Eigen::Infinity>());
+  return output;
+}
+
+}  // namespace
+
+void register_superhelix_cases(Registry& registry) {
+  // Round-off bound for the exact cases: N chained closed-form elements, each a few eps of L, plus
+  // Newton's round-off floor (|r| / K ~ N eps): 1e-12 covers 64 N eps for N <= 64 (helix: measured
+  // <= 1.1e-15 for N = 1 .. 16; roll-up see below).
+  constexpr double kRoundOff = 1e-12;
+  const std::string exact_why = "uniform strains are represented exactly: round-off only (64 N eps, N <= 64)";
+  {
+    std::vector<GateSpec> gates{
+        // N = 1 (one element turning by 2 pi) stops at Newton's round-off floor: measured 7.0e-13 for the
+        // shape and 4.7e-13 for H, <= 2e-15 for N = 2 .. 64; bound 2e-12 (~3 x measured).
+        upper_bound_gate("shape_max_error", 2e-12, GateScope::AllLevels, exact_why + "; Newton floor at N = 1"),
+        upper_bound_gate("tip_gap", 2e-12, GateScope::AllLevels, "the full circle closes: " + exact_why),
+        upper_bound_gate("H_spread", kRoundOff, GateScope::AllLevels, "H = M^2/(2EI) at every station: " + exact_why),
+        upper_bound_gate("H_form_difference", kRoundOff, GateScope::AllLevels, "compact = flattened to round-off"),
+        upper_bound_gate("H_mean", 2e-12, GateScope::AllLevels, exact_why + "; Newton floor at N = 1")};
+    registry.add(make_case(
+        "superhelix/roll-up", "3-D cantilever rolled into a full circle by a dead end moment",
+        "Kirchhoff rod clamped with a tilted frame; dead end moment M = 2 pi EI / L about an axis in the "
+        "cross-section (isotropic bending, GJ = 0.7 EI): a circle of radius EI/M.",
+        "r(s) = r0 + (EI/M) sin(Ms/EI) t0 + (EI/M)(1 - cos(Ms/EI)) a x t0; H = M^2/(2EI)",
+        "Exact circle under a pure end moment (Euler); ALGORITHMS.md §1.7; PHYSICS.md §3.4",
+        {length_parameter(), stiffness_parameter(),
+         make_parameter("turns", 1.0, 0.0, 1.0, true, false, "", "M L / (2 pi EI)"),
+         make_parameter("axis_angle_deg", 30.0, -180.0, 180.0, false, false, "deg",
+                        "moment axis in the cross-section, from n1 towards n2")},
+        elements({1, 2, 4, 8, 16}, {1, 2, 4, 8, 16, 32, 64}),
+        {{"shape_max_error", MetricKind::Error, "", "max |r_i - r_exact(s_i)| / L over vertices", false, std::nullopt},
+         {"tip_gap", MetricKind::Error, "", "|r(L) - r(0)| / L (0: the circle closes)", false, std::nullopt},
+         noether_metric_specs(true, std::nullopt)[0], noether_metric_specs(true, std::nullopt)[1],
+         noether_metric_specs(true, std::nullopt)[2], diagnostic_metric("newton_iterations", "Newton iterations")},
+        gates, run_roll_up));
+  }
+  {
+    std::vector<GateSpec> gates{
+        upper_bound_gate("shape_max_error", kRoundOff, GateScope::AllLevels, exact_why),
+        upper_bound_gate("frame_max_error", kRoundOff, GateScope::AllLevels, exact_why),
+        upper_bound_gate("strain_max_error", kRoundOff, GateScope::AllLevels, exact_why),
+        upper_bound_gate("H_spread", kRoundOff, GateScope::AllLevels, "H constant along the helix: " + exact_why),
+        upper_bound_gate("H_form_difference", kRoundOff, GateScope::AllLevels, "compact = flattened to round-off"),
+        upper_bound_gate("H_mean", kRoundOff, GateScope::AllLevels, exact_why)};
+    auto metrics = std::vector<MetricSpec>{
+        {"shape_max_error", MetricKind::Error, "", "max |r_i - r_helix(s_i)| / L over vertices", false, std::nullopt},
+        {"frame_max_error", MetricKind::Error, "", "max |R_i - R_helix(s_i)| (entries)", false, std::nullopt},
+        {"strain_max_error", MetricKind::Error, "", "max |q_Q - (tau, kappa, 0)| / |u|", false, std::nullopt},
+        diagnostic_metric("newton_iterations", "Newton iterations")};
+    for (auto& m : noether_metric_specs(true, std::nullopt)) metrics.push_back(m);
+    registry.add(make_case(
+        "superhelix/helix-axial-wrench", "uniform helix held by an axial wrench, with natural twist",
+        "Kirchhoff rod (isotropic bending B, twist C, natural twist u_hat0 = tau - M_t/C) clamped in the "
+        "helix frame at s = 0, loaded at s = L by the dead force F e_z and the end moment m(L) = B kappa b "
+        "+ M_t t: the uniform helix of radius R and pitch angle alpha is an exact equilibrium.",
+        "kappa = sin^2(a)/R, tau = sin(a)cos(a)/R, F = (M_t - B tau) sin(a)/R, M = B sin^3(a)/R + M_t cos(a); "
+        "H = F cos(a) + B kappa^2/2 + M_t tau - M_t^2/(2C)",
+        "Love 1944 §§270-271; PHYSICS.md §7.1 (40-digit mpmath check in tests/data/rod3d_reference.csv)",
+        {length_parameter(3.0), make_parameter("B", 1.3, 0.0, 1e12, true, false, "force length^2", "bending stiffness"),
+         make_parameter("C", 0.9, 0.0, 1e12, true, false, "force length^2", "twisting stiffness"),
+         make_parameter("radius", 0.7, 0.0, 1e6, true, false, "length", "helix radius"),
+         make_parameter("pitch_angle", 0.6, 0.0, kPi / 2, true, true, "rad", "angle between tangent and axis"),
+         make_parameter("twisting_moment", 0.37, -1e6, 1e6, false, false, "force length", "M_t = m.t")},
+        elements({1, 2, 4, 8, 16}, {1, 2, 4, 8, 16, 32, 64}), metrics, gates, run_helix));
+  }
+  {
+    const std::vector<double> levels{8, 16, 32};
+    const double hf = 1.0 / levels.back();
+    std::vector<GateSpec> gates{order_gate("tip_w", 2.0, "midpoint-consistent piecewise-constant strains: second order"),
+                                order_gate("tip_u", 2.0, "second order"), order_gate("tip_phi", 2.0, "second order"),
+                                // measured at N = 32 (rodvv sweep, 2026-11-21): orders 2.000 over N = 8 .. 64
+                                measured_bound("tip_w", 9.024e-5, hf, 2.0), measured_bound("tip_u", 4.492e-5, hf, 2.0),
+                                measured_bound("tip_phi", 4.933e-5, hf, 2.0),
+                                upper_bound_gate("out_of_plane", kRoundOff, GateScope::AllLevels,
+                                                 "a planar load keeps the rod in its plane: round-off")};
+    registry.add(make_case(
+        "superhelix/mattiasson-2", "Mattiasson cantilever (P L^2/EI = 2) solved in 3-D",
+        "Super-Helix cantilever clamped horizontally (tangent yawed by 30 deg, cross-section rolled by 40 deg, "
+        "GJ = 0.8 EI) under a vertical dead tip load P: a planar elastica computed with all three strains.",
+        "sqrt(alpha) = K(k) - F(psi0, k); tip displacements by incomplete elliptic integrals (planar reference)",
+        "Bisshopp & Drucker 1945; Mattiasson 1981, IJNME 17:145-153; PHYSICS.md §3.5",
+        {length_parameter(), stiffness_parameter(),
+         make_parameter("alpha", 2.0, 0.0, 20.0, true, false, "", "load parameter P L^2 / EI")},
+        elements(levels, {8, 16, 32, 64, 128}),
+        {error_metric("tip_w", "length", "vertical tip deflection", 2.0, true),
+         error_metric("tip_u", "length", "horizontal tip displacement along the clamp tangent", 2.0, true),
+         error_metric("tip_phi", "rad", "tip rotation below the horizontal", 2.0, true),
+         {"out_of_plane", MetricKind::Error, "", "tip distance from the load plane / L", false, std::nullopt},
+         diagnostic_metric("newton_iterations", "Newton iterations")},
+        gates, run_mattiasson));
+  }
+  {
+    const std::vector<double> levels{8, 16, 32};
+    std::vector<GateSpec> gates{
+        order_gate("H_spread", 2.0, "H(s) at element midpoints: second order (PHYSICS.md §1.4)"),
+        measured_bound("H_spread", 1.454e-4, 1.0 / levels.back(), 2.0),  // at N = 32; order 1.99 over N = 8 .. 64
+        upper_bound_gate("H_form_difference", kRoundOff, GateScope::AllLevels, "compact = flattened to round-off (64 eps x terms)")};
+    registry.add(make_case(
+        "superhelix/heavy-cantilever", "naturally curved and twisted cantilever under its own weight: H(s)",
+        "Super-Helix cantilever (GJ = 0.6 EI, EI2 = 1.4 EI) with natural strains (0.8, 1.2, -0.5)/L, tilted clamp, "
+        "under gravity rho S g L^3/EI = weight: the Lagrangian has no explicit s, so H is conserved.",
+        "H = n.v + m.u - W - V constant along s (V = -rho S g.r), compact and flattened forms equal",
+        "Maddocks & Dichmann 1994, J. Elasticity 34:83; PHYSICS.md §1.1; seed slides 002",
+        {length_parameter(), stiffness_parameter(),
+         make_parameter("weight", 3.0, 0.0, 50.0, true, false, "", "rho S g L^3 / EI")},
+        elements(levels, {8, 16, 32, 64, 128}),
+        [] {
+          auto specs = noether_metric_specs(false, 2.0);
+          specs.push_back(diagnostic_metric("newton_iterations", "Newton iterations"));
+          specs.push_back(diagnostic_metric("tip_z", "tip height"));
+          return specs;
+        }(),
+        gates, run_heavy));
+  }
+  {
+    const std::vector<double> levels{8, 16, 32, 64};
+    std::vector<GateSpec> gates{
+        order_gate("omega1", 2.0, "Rayleigh-Ritz with piecewise-constant curvature: O(N^-2) (ALGORITHMS.md §1.7)"),
+        order_gate("omega2", 2.0, "O(N^-2)"), order_gate("omega3", 2.0, "O(N^-2)"),
+        lower_bound_gate("min_relative_excess", 0.0, GateScope::AllLevels,
+                         "Rayleigh-Ritz: discrete frequencies lie above the continuous ones")};
+    registry.add(make_case(
+        "superhelix/modes", "linearised bending frequencies of a straight cantilever",
+        "Straight Super-Helix cantilever, small oscillations about q = 0 without gravity: K v = omega^2 M v "
+        "on the bending coordinates.",
+        "omega_n = (beta_n L)^2 sqrt(EI/(rho S L^4)), 1 + cos(beta L) cosh(beta L) = 0",
+        "Euler-Bernoulli cantilever (Rayleigh, Theory of Sound); ALGORITHMS.md §1.7",
+        {length_parameter(), stiffness_parameter(),
+         make_parameter("rhoS", 1.0, 0.0, 1e12, true, false, "mass/length", "line density")},
+        elements(levels, {8, 16, 32, 64, 128, 256}),
+        {error_metric("omega1", "1/time", "relative error of the first frequency", 2.0, true),
+         error_metric("omega2", "1/time", "relative error of the second frequency", 2.0, true),
+         error_metric("omega3", "1/time", "relative error of the third frequency", 2.0, true),
+         diagnostic_metric("min_relative_excess", "min over modes of (omega - omega_EB)/omega_EB (>= 0)")},
+        gates, run_modes));
+  }
+  {
+    std::vector<GateSpec> gates{
+        order_gate("energy_loss", 1.0, "semi-implicit Euler dissipates at first order in h (ALGORITHMS.md §1.5)"),
+        upper_bound_gate("max_energy_increase", 1e-13, GateScope::AllLevels,
+                         "monotone decay: any increase is round-off of E (~64 eps |E| summed terms)"),
+        upper_bound_gate("dense_vs_recursive", 1e-12, GateScope::AllLevels,
+                         "the O(N) recursion solves the same system as the dense LDL^T (issue gate 1e-12, "
+                         "as a relative residual)")};
+    Case c = make_case(
+        "superhelix/energy-decay", "undamped swing under gravity: energy decay and dense vs O(N) step",
+        "Super-Helix cantilever (N elements, GJ = 0.7, EI2 = 1.3, natural curvature 0.8 about n2, tilted "
+        "clamp) released from its natural shape under gravity g along -n1(0), no damping; semi-implicit "
+        "Euler (implicit elastic term). The load lies in the rod's plane, so the motion stays planar in a "
+        "3-D frame: a fully 3-D release excites the light twist coordinates, whose explicit velocity terms "
+        "need h below ~1e-5 before the loss is in its first-order range (see the issue note).",
+        "E = T + U + V is conserved by the exact flow; the loss E(0) - E(t_end) is the error, O(h)",
+        "ALGORITHMS.md §1.5-1.7; Bertails et al. 2006; Bertails 2009 (linear time)",
+        {make_parameter("N", 8.0, 1.0, 256.0, false, false, "", "number of elements"),
+         make_parameter("g", 2.0, 0.0, 100.0, true, false, "length/time^2", "gravity"),
+         make_parameter("t_end", 0.25, 0.0, 100.0, true, false, "time", "horizon")},
+        // pairwise orders of the loss 0.93, 0.94, 0.95, 0.96 from dt = 4e-3 down to 2.5e-4 (an O(h^2) part
+        // decays): the default levels start at 2e-3 so that the fit (0.94) is inside the window
+        {"dt", "time step", ResolutionScale::StepSize, {2e-3, 1e-3, 5e-4}, {4e-3, 2e-3, 1e-3, 5e-4, 2.5e-4, 1.25e-4}},
+        {{"energy_loss", MetricKind::Error, "", "(E(0) - E(t_end)) / |E|", false, 1.0},
+         diagnostic_metric("max_energy_increase", "max (E_{n+1} - E_n) / |E| (<= round-off: monotone)"),
+         {"dense_vs_recursive", MetricKind::Error, "",
+          "max over steps of |(M + D)(dv_dense - dv_recursive)| / |(M + D) dv_dense| (relative residual)", false,
+          std::nullopt},
+         diagnostic_metric("dense_vs_recursive_forward", "max over steps of |dv_dense - dv_recursive|_inf / |dv|_inf")},
+        gates, run_energy);
+    registry.add(std::move(c));
+  }
+  {
+    registry.add(make_case(
+        "superhelix/curl-at-rest", "a curl at rest stays at rest",
+        "Super-Helix with q = q0 (a tight twisted curl), no gravity, no end loads, released from rest: "
+        "100 semi-implicit Euler steps alternating dense and recursive solves.",
+        "q(t) = q0, qdot(t) = 0 exactly", "ALGORITHMS.md §1.7 (rest state)",
+        {length_parameter()}, elements({4, 8, 16}, {4, 8, 16, 32, 64}),
+        {{"max_drift", MetricKind::Error, "", "|q - q0|_inf + |qdot|_inf after 100 steps", false, std::nullopt}},
+        {upper_bound_gate("max_drift", 1e-300, GateScope::AllLevels, "every force vanishes identically: exactly 0")},
+        run_curl));
+  }
+}
+
+}  // namespace rodvv::harness

@@ -1,0 +1,31 @@
+#pragma once
+// Super-clothoid element kinematics (ALGORITHMS.md §2; Casati & Bertails-Descoubes 2013): material
+// strains affine in the arc length on the element, kappa(sigma) = a + sigma b (components
+// (twist, kappa1, kappa2)), so R' = R [a + sigma b]x, r' = R e0 has no closed form. It is
+// integrated by the power series (entire, since the coefficients are polynomial)
+//
+//   R(sigma) = sum_k A_k sigma^k,  A_0 = I,  A_{-1} = 0,  (k+1) A_{k+1} = A_k [a]x + A_{k-1} [b]x,
+//   r(sigma) = sum_k (A_k e0) sigma^(k+1) / (k+1),
+//
+// truncated adaptively when |A_k| h^k (and the next term) fall below `tolerance` (relative to
+// |R| = 1), on sub-intervals of length h short enough that (|a| + |b| ell) h <= 2 (so that ~20-40
+// terms suffice and no cancellation occurs); (R, r) are composed across sub-intervals, each
+// starting from the strain a + sigma0 b at its own origin. With b = 0 it reduces to the
+// Super-Helix closed form (element.hpp). Local frame: the element starts at the origin with R = I.
+// Bad input: non-finite strains, ell <= 0 or non-finite, tolerance outside (0, 1e-6] -> InputError.
+#include <cstddef>
+
+#include "rodvv/common/eigen_types.hpp"
+
+namespace rodvv::solvers::superhelix {
+
+struct ClothoidPose {
+  Mat3 R;                   // frame at sigma = ell
+  Vec3 r;                   // position at sigma = ell
+  std::size_t pieces = 0;   // sub-intervals used
+  std::size_t max_terms = 0;  // largest number of series terms in one sub-interval
+};
+
+ClothoidPose clothoid_element(const Vec3& a, const Vec3& b, double ell, double tolerance = 1e-17);
+
+}  // namespace rodvv::solvers::superhelix

@@ -1,0 +1,53 @@
+#pragma once
+// Closed form of one Super-Helix element in its own base frame (ALGORITHMS.md §1.2-1.3), in the
+// singularity-free form: with X = [q]x, x = sigma |q|,
+//
+//   E(sigma) = exp(sigma X)          = I + sigma s0(x) X + sigma^2 f1(x) X^2           (frame)
+//   G(sigma) = int_0^sigma exp(u X) du = sigma I + sigma^2 f1(x) X + sigma^3 f2(x) X^2
+//
+//   s0 = sin x / x,  f1 = (1 - cos x)/x^2,  f2 = (x - sin x)/x^3,
+//
+// so that on element Q with base frame R_Q and base point p_Q:
+//   R(sigma) = R_Q E(sigma),   r(sigma) = p_Q + R_Q G(sigma) e0,
+//   Theta_iQ(sigma) = R_Q G(sigma) e_i   (rotation per unit q_i, §1.3),
+//   T_iQ(sigma) = dr/dq_iQ = R_Q (dG/dq_i)(sigma) e0, with
+//   dG/dq_i = sigma^4 g1 q_i X + sigma^2 f1 [e_i]x + sigma^5 g2 q_i X^2 + sigma^3 f2 ([e_i]x X + X [e_i]x),
+//   g1 = f1'(x)/x, g2 = f2'(x)/x  (d x / d q_i = sigma^2 q_i / x).
+// All five coefficients are even entire functions of x, evaluated from x^2: by their Taylor series
+// below x^2 = 1 (10 terms: truncation below 1/22! ~ 1e-21) and by the trigonometric formulas above
+// (where their cancellation error is at most ~eps / x^2 <= eps). A straight element (q = 0) is
+// therefore exact: E = I, G = sigma I.
+#include <Eigen/Geometry>
+
+#include "rodvv/common/eigen_types.hpp"
+
+namespace rodvv::solvers::superhelix {
+
+struct HelixCoefficients {
+  double s0 = 1.0, f1 = 0.5, f2 = 1.0 / 6.0, g1 = -1.0 / 12.0, g2 = -1.0 / 60.0;
+};
+
+HelixCoefficients helix_coefficients(double x_squared);
+
+struct ElementMaps {
+  Mat3 E;    // exp(sigma [q]x)
+  Mat3 G;    // int_0^sigma exp(u [q]x) du
+  Mat3 dG0;  // column i = (dG/dq_i) e0, the local position Jacobian
+};
+
+ElementMaps element_maps(const Vec3& q, double sigma);
+
+// What a mass point needs (no frame): the local offset G(sigma) e0 and dG0 (a cheaper subset).
+struct PointMaps {
+  Vec3 Ge0;
+  Mat3 dG0;
+};
+PointMaps element_point_maps(const Vec3& q, double sigma);
+
+inline Mat3 skew(const Vec3& a) {
+  Mat3 m;
+  m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
+  return m;
+}
+
+}  // namespace rodvv::solvers::superhelix

@@ -1,0 +1,54 @@
+#pragma once
+// The data of a Super-Helix rod problem (ALGORITHMS.md §1; Bertails et al. 2006): a Kirchhoff rod
+// (inextensible, unshearable) of length L clamped at s = 0, cut into N elements of equal length on
+// which the material strains q_Q = (twist, kappa1, kappa2) are constant.
+//
+// Generalised coordinates: q in R^{3N}, q.segment<3>(3 Q) = (tau, kappa1, kappa2) of element Q.
+// Frame convention: R = [n0 n1 n2] with n0 the tangent; R' = R [q_Q]x on element Q.
+// Loads (all dead, world components): gravity acceleration g acting on the line density rho S,
+// an end force and an end moment at s = L. Dissipation: stiffness-proportional (Rayleigh) damping
+// gamma K qdot. Units: any consistent set.
+//
+// validate() throws rodvv::InputError naming the parameter and its range for: zero elements,
+// non-positive length / stiffness / density, a root frame that is not a rotation (|R^T R - I| or
+// |det R - 1| above 1e-10), negative damping, a non-finite entry anywhere, a wrong-sized per-element
+// natural strain, fewer than 1 or more than 8 Gauss points.
+#include <cstddef>
+#include <vector>
+
+#include "rodvv/common/eigen_types.hpp"
+
+namespace rodvv::solvers::superhelix {
+
+struct RodModel {
+  double length = 1.0;
+  std::size_t elements = 8;
+  Vec3 stiffness = Vec3::Ones();          // (GJ, EI1, EI2): twist and the two bending stiffnesses
+  Vec3 natural_strain = Vec3::Zero();     // q0, the same on every element ...
+  std::vector<Vec3> natural_strain_per_element;  // ... unless this holds N values
+  double line_density = 1.0;              // rho S, mass per unit length
+  Vec3 gravity = Vec3::Zero();            // acceleration of gravity g
+  Vec3 root_position = Vec3::Zero();
+  Mat3 root_frame = Mat3::Identity();     // columns n0, n1, n2 at s = 0
+  Vec3 end_force = Vec3::Zero();          // dead force at s = L
+  Vec3 end_moment = Vec3::Zero();         // dead moment at s = L
+  double rayleigh_stiffness = 0.0;        // gamma: damping force -gamma K qdot
+  std::size_t gauss_points = 4;           // Gauss-Legendre points per element (mass, gravity)
+};
+
+void validate(const RodModel& model);
+
+inline double element_length(const RodModel& model) {
+  return model.length / static_cast<double>(model.elements);
+}
+inline std::size_t dof_count(const RodModel& model) { return 3 * model.elements; }
+
+// q0 of element Q.
+Vec3 natural_strain(const RodModel& model, std::size_t element);
+// q0 as one vector of 3N values.
+VecX natural_strain_vector(const RodModel& model);
+// Diagonal of the generalised stiffness K_Q = diag(GJ, EI1, EI2) * ell_Q, as 3N values
+// (U_elastic = 1/2 (q - q0)^T diag(K) (q - q0), ALGORITHMS.md §1.4).
+VecX generalised_stiffness(const RodModel& model);
+
+}  // namespace rodvv::solvers::superhelix

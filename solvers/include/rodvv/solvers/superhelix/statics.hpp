@@ -1,0 +1,45 @@
+#pragma once
+// Static equilibrium of a Super-Helix (ALGORITHMS.md §1.4 with qdot = 0): the stationarity of the
+// potential energy, written as the residual
+//
+//   r(q) = K (q - q0) - F_ext(q)         (K = diag(GJ, EI1, EI2) ell per element)
+//
+// where F_ext are the generalised forces of gravity and of the dead end force and moment
+// (loads.hpp). For gravity and an end force r is the gradient of 1/2 (q-q0)^T K (q-q0) + V(q);
+// a dead end moment is not conservative for general 3-D rotations (Ziegler), so the Jacobian is
+// not symmetric in general and Newton works on r itself.
+//
+// Newton: Jacobian dr/dq by central differences of the O(N) residual (3N columns; step
+// cbrt(eps) max(|q_j|, 1/L), truncation error ~1e-11 relative, so Newton converges linearly with a
+// contraction ~1e-10 per iteration, indistinguishable from quadratic here), LU with partial
+// pivoting, backtracking line search on 1/2 |r|^2 (Armijo 1e-4, step halved down to 2^-30).
+// Load stepping: loads scaled by lambda_k = k / load_steps, each step starting from the previous.
+// Convergence: |r|_inf <= tolerance * scale, scale = max(|K|_inf |q|_inf, |K|_inf / L,
+// |F_ext(q0)|_inf), or a Newton step at round-off (|dq|_inf <= 64 eps (1 + |q|_inf) L).
+// Failure: rodvv::SolverError (iterations, residual). Cost per Newton iteration: O(N^2) for the
+// Jacobian and O(N^3) for the dense LU.
+#include <cstddef>
+
+#include "rodvv/common/eigen_types.hpp"
+#include "rodvv/solvers/superhelix/model.hpp"
+
+namespace rodvv::solvers::superhelix {
+
+struct StaticOptions {
+  std::size_t load_steps = 1;       // >= 1
+  std::size_t max_iterations = 50;  // per load step, >= 1
+  double tolerance = 1e-12;         // relative, in (0, 1)
+  VecX initial_q;                   // empty: start from q0
+};
+
+struct StaticResult {
+  VecX q;
+  std::size_t iterations = 0;  // Newton iterations over all load steps
+  double residual = 0.0;       // final |r|_inf
+};
+
+VecX static_residual(const RodModel& model, const VecX& q, double load_factor = 1.0);
+MatX static_jacobian(const RodModel& model, const VecX& q, double load_factor = 1.0);
+StaticResult solve_static(const RodModel& model, const StaticOptions& options = {});
+
+}  // namespace rodvv::solvers::superhelix

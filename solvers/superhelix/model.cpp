@@ -1,0 +1,73 @@
+#include "rodvv/solvers/superhelix/model.hpp"
+
+#include <Eigen/LU>
+
+#include <cmath>
+#include <string>
+
+#include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
+
+namespace rodvv::solvers::superhelix {
+
+namespace {
+void require_finite_vector(const std::string& name, const Vec3& v) {
+  for (int i = 0; i < 3; ++i) require_finite(name + "[" + std::to_string(i) + "]", v[i]);
+}
+}  // namespace
+
+void validate(const RodModel& model) {
+  require_at_least("elements", model.elements, 1);
+  require_positive("length", model.length);
+  require_positive("stiffness.twist (GJ)", model.stiffness[0]);
+  require_positive("stiffness.bending1 (EI1)", model.stiffness[1]);
+  require_positive("stiffness.bending2 (EI2)", model.stiffness[2]);
+  require_positive("line_density", model.line_density);
+  require_non_negative("rayleigh_stiffness", model.rayleigh_stiffness);
+  require_finite_vector("natural_strain", model.natural_strain);
+  if (!model.natural_strain_per_element.empty()) {
+    if (model.natural_strain_per_element.size() != model.elements)
+      throw InputError("natural_strain_per_element",
+                       "invalid parameter 'natural_strain_per_element': must be empty or hold one value "
+                       "per element (" + std::to_string(model.elements) + "), got " +
+                           std::to_string(model.natural_strain_per_element.size()));
+    for (const auto& q0 : model.natural_strain_per_element)
+      require_finite_vector("natural_strain_per_element", q0);
+  }
+  require_finite_vector("gravity", model.gravity);
+  require_finite_vector("root_position", model.root_position);
+  require_finite_vector("end_force", model.end_force);
+  require_finite_vector("end_moment", model.end_moment);
+  for (int i = 0; i < 3; ++i) require_finite_vector("root_frame", model.root_frame.col(i));
+  // A rotation: orthonormal columns and det = +1, to 1e-10 (a frame built from unit vectors in
+  // double precision is orthonormal to ~1e-15; 1e-10 accepts frames typed with ~10 digits).
+  const double orthogonality = (model.root_frame.transpose() * model.root_frame - Mat3::Identity()).norm();
+  const double det = model.root_frame.determinant();
+  if (!(orthogonality <= 1e-10) || !(std::abs(det - 1.0) <= 1e-10))
+    throw InputError("root_frame", "invalid parameter 'root_frame': must be a rotation matrix "
+                                   "(|R^T R - I| <= 1e-10 and |det R - 1| <= 1e-10), got |R^T R - I| = " +
+                                       format_value(orthogonality) + ", det R = " + format_value(det));
+  if (model.gauss_points < 1 || model.gauss_points > 8)
+    throw InputError("gauss_points", "invalid parameter 'gauss_points' = " +
+                                         std::to_string(model.gauss_points) + ": must be an integer in [1, 8]");
+}
+
+Vec3 natural_strain(const RodModel& model, std::size_t element) {
+  return model.natural_strain_per_element.empty() ? model.natural_strain
+                                                  : model.natural_strain_per_element[element];
+}
+
+VecX natural_strain_vector(const RodModel& model) {
+  VecX q0(dof_count(model));
+  for (std::size_t e = 0; e < model.elements; ++e) q0.segment<3>(3 * e) = natural_strain(model, e);
+  return q0;
+}
+
+VecX generalised_stiffness(const RodModel& model) {
+  VecX k(dof_count(model));
+  const double ell = element_length(model);
+  for (std::size_t e = 0; e < model.elements; ++e) k.segment<3>(3 * e) = model.stiffness * ell;
+  return k;
+}
+
+}  // namespace rodvv::solvers::superhelix

@@ -1,0 +1,120 @@
+#!/usr/bin/python3
+"""Generate tests/data/reissner_reference.csv: the high-precision table for the extensible, shearable
+(planar Reissner) cantilever under a vertical dead tip load.
+
+Model (Reissner 1972, ZAMP 23:795-804; Simo & Vu-Quoc 1986): theta is the cross-section angle,
+t = (cos theta, sin theta), N = (-sin theta, cos theta), internal force n (force of (s, L] on [0, s]),
+stretch eps = n.t / EA, shear gamma = n.N / GA, bending moment m = EI theta'. Equilibrium without
+distributed load:
+    n' = 0,   m' + r' x n = 0,   r' = (1 + eps) t + gamma N,
+so with the dead tip load F = (0, -P) the force is n = F everywhere and
+    theta' = m / EI,   m' = -[(1 + eps) n.N - gamma n.t],   x' + i y' = r'.
+Clamp at s = 0: theta = 0, r = 0. Free tip: m(L) = 0.
+
+Method (independent of the C++ discretisation): single shooting on the unknown clamp moment m(0),
+integrating the four ODEs with mpmath.odefun (Taylor-series method, tolerance ~ working epsilon) at
+mp.dps = DPS, root m(L) = 0 by mpmath.findroot (secant). Cross-checks printed to stderr: the residual
+m(L), the Noether invariant
+    H = n.r' + m theta' - W - V = EI theta'^2 / 2 + n.t + (n.t)^2 / (2 EA) + (n.N)^2 / (2 GA)
+at s = 0 and s = L (must agree to ~ working precision), and the global moment balance
+m(0) = -(r(L) x F) (the clamp moment balances the tip load's moment).
+
+Every input is a binary64 number (stored in shortest round-trip form; the integration uses exactly
+that binary value). Values have 30 significant digits.
+Output format (long): case,P,EA,GA,L,EI,s,quantity,value (s empty for scalars).
+
+Usage:  /usr/bin/python3 tests/data/make_reissner_table.py   (run by hand; about 4 minutes per row on a loaded 2-core machine)
+"""
+import os
+import sys
+import time
+
+import mpmath
+from mpmath import mp, mpf
+
+DPS = 36      # working precision (>= 30 required, 6 guard digits)
+DIGITS = 30   # significant digits written to the table
+
+# (P, EA, GA) with L = EI = 1: P L^2/EI = 5, EA = GA = 100 EI/L^2 (isotropic compliance) and
+# EA != GA (the compliance then depends on the angle).
+CASES = [(5.0, 100.0, 100.0), (5.0, 100.0, 40.0)]
+SAMPLES = [0.25, 0.5, 0.75, 1.0]
+
+
+def rhs(P, EA, GA, EI):
+    def f(s, y):
+        theta, m, _, _ = y
+        c, sn = mpmath.cos(theta), mpmath.sin(theta)
+        nx, ny = mpf(0), -P
+        nt = nx * c + ny * sn
+        nn = -nx * sn + ny * c
+        eps, gam = nt / EA, nn / GA
+        rx = (1 + eps) * c - gam * sn
+        ry = (1 + eps) * sn + gam * c
+        return [m / EI, -((1 + eps) * nn - gam * nt), rx, ry]
+    return f
+
+
+def solve(P, EA, GA, L, EI):
+    """Clamp moment m(0) and the odefun solution. A first secant solve at 18 digits (cheap) gives a
+    starting point ~1e-16 from the root; the full-precision secant then needs ~3 integrations."""
+    def shoot(m0):
+        f = rhs(mpf(P), mpf(EA), mpf(GA), mpf(EI))
+        return mpmath.odefun(f, 0, [mpf(0), m0, mpf(0), mpf(0)], tol=mpf(10) ** (-mp.dps))
+
+    def residual(m0):
+        return shoot(m0)(mpf(L))[1]
+
+    with mpmath.workdps(18):
+        rough = mpmath.findroot(residual, (mpf(-3), mpf(-2.9)), solver='secant', tol=mpf(10) ** (-15))
+    m0 = mpmath.findroot(residual, (mpf(rough), mpf(rough) * (1 + mpf(10) ** (-12))), solver='secant',
+                         tol=mpf(10) ** (-(DPS - 4)))
+    return m0, shoot(m0)
+
+
+def invariant(y, P, EA, GA, EI):
+    theta, m = y[0], y[1]
+    c, sn = mpmath.cos(theta), mpmath.sin(theta)
+    nt, nn = -P * sn, -P * c
+    return m * m / (2 * EI) + nt + nt * nt / (2 * EA) + nn * nn / (2 * GA)
+
+
+def fmt(x):
+    return mpmath.nstr(x, DIGITS, min_fixed=-5, max_fixed=5)
+
+
+def main():
+    mp.dps = DPS
+    out = os.path.join(os.path.dirname(os.path.abspath(__file__)), "reissner_reference.csv")
+    rows = []
+    L, EI = 1.0, 1.0
+    for (P, EA, GA) in CASES:
+        t0 = time.time()
+        m0, sol = solve(P, EA, GA, L, EI)
+        yL = sol(mpf(L))
+        h0 = invariant([mpf(0), m0], mpf(P), mpf(EA), mpf(GA), mpf(EI))
+        hL = invariant(yL, mpf(P), mpf(EA), mpf(GA), mpf(EI))
+        moment_balance = m0 + mpf(P) * yL[2]  # m(0) = -(r(L) x F) = -P x(L), F = (0, -P)
+        print(f"P={P} EA={EA} GA={GA}: m(L)={mpmath.nstr(yL[1], 3)} H0-HL={mpmath.nstr(h0 - hL, 3)} "
+              f"moment balance {mpmath.nstr(moment_balance, 3)} ({time.time() - t0:.1f} s)", file=sys.stderr)
+        key = f"cantilever,{P!r},{EA!r},{GA!r},{L!r},{EI!r}"
+        rows.append(f"{key},,clamp_moment,{fmt(m0)}")
+        rows.append(f"{key},,H,{fmt(hL)}")
+        for s in SAMPLES:
+            y = sol(mpf(s))
+            for name, value in (("theta", y[0]), ("moment", y[1]), ("x", y[2]), ("y", y[3])):
+                rows.append(f"{key},{s!r},{name},{fmt(value)}")
+    with open(out, "w") as fh:
+        fh.write("# Planar Reissner (extensible, shearable) cantilever reference table for\n")
+        fh.write("# tests/solvers/test_elastica2d_extensible.cpp and the elastica/reissner-cantilever cases.\n")
+        fh.write(f"# Generated by tests/data/make_reissner_table.py (mpmath {mpmath.__version__}, mp.dps = {DPS}); "
+                 "do not edit.\n")
+        fh.write("# Shooting on theta' = m/EI, m' = -(r' x n), r' = (1 + n.t/EA) t + (n.N/GA) N, n = (0, -P);\n")
+        fh.write("#   clamp theta(0) = 0, r(0) = 0; free tip m(L) = 0. mpmath.odefun + findroot.\n")
+        fh.write("case,P,EA,GA,L,EI,s,quantity,value\n")
+        for r in rows:
+            fh.write(r + "\n")
+
+
+if __name__ == "__main__":
+    main()

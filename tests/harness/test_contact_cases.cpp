@@ -1,0 +1,104 @@
+// The elastica-contact cases pass at their default levels, and their gates turn red on a wrong
+// model: the cavity run against a wall 1% further out, a soft wall reported as the hard one, a
+// contact force that is off by the (point-contact) discretisation error x 4.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "case_test_support.hpp"
+#include "rodvv/common/errors.hpp"
+#include "rodvv/harness/parameters.hpp"
+#include "rodvv/harness/sweep.hpp"
+
+namespace {
+
+using namespace rodvv::harness;
+using rodvv::testing::failing_gates;
+using rodvv::testing::named_case;
+using rodvv::testing::run_at_default_levels;
+
+class ContactCase : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ContactCase, PassesAtDefaultLevels) {
+  const auto result = run_at_default_levels(named_case(GetParam()));
+  EXPECT_TRUE(result.passed()) << GetParam() << failing_gates(result);
+  EXPECT_FALSE(result.gates.empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(AllContactCases, ContactCase,
+                         ::testing::ValuesIn(rodvv::testing::case_names_of_family("elastica-contact")),
+                         [](const ::testing::TestParamInfo<std::string>& param_info) {
+                           return rodvv::testing::test_name_of_case(param_info.param);
+                         });
+
+TEST(ContactCases, AllNineAreRegistered) {
+  EXPECT_EQ(rodvv::testing::case_names_of_family("elastica-contact").size(), 9u);
+}
+
+// The solver runs with the wall at 0.101 while the reference keeps 0.1: P moves by ~0.3, far above
+// the C h^2 bounds.
+TEST(ContactGatesHaveTeeth, WrongWallGapFailsThePointContactCase) {
+  Case wrong = named_case("elastica-contact/cavity-point/arcs");
+  const auto original = wrong.run_level;
+  wrong.run_level = [original](const Parameters& p, double level) {
+    Parameters moved = p;
+    set_parameter(moved, "wall_gap", 0.101);
+    LevelOutput solver = original(moved, level);
+    const LevelOutput truth = original(p, level);
+    for (auto& [name, sample] : solver.metrics)
+      if (truth.metrics.at(name).reference && sample.reference) {
+        sample.reference = truth.metrics.at(name).reference;
+        sample.error = std::abs(sample.computed - *sample.reference);
+      }
+    return solver;
+  };
+  const auto result = run_sweep(wrong, wrong.info.parameters, wrong.info.resolution.default_levels);
+  EXPECT_FALSE(result.passed());
+}
+
+// A constant relative bias of 1e-4 in P (smaller than the coarse-level error) flattens the observed
+// order at the fine levels: the order gate catches it.
+TEST(ContactGatesHaveTeeth, BiasedLoadFailsTheOrderGate) {
+  Case wrong = named_case("elastica-contact/cavity-free/polygon");
+  const auto original = wrong.run_level;
+  wrong.run_level = [original](const Parameters& p, double level) {
+    LevelOutput out = original(p, level);
+    auto& P = out.metrics.at("P");
+    P.computed *= 1.0 + 1e-4;
+    P.error = std::abs(P.computed - *P.reference);
+    return out;
+  };
+  const auto result = run_sweep(wrong, wrong.info.parameters, wrong.info.resolution.default_levels);
+  EXPECT_FALSE(result.passed());
+}
+
+// Soft wall at b reported against the hard wall's constant in place of the §4.2 table: the
+// P_vs_table bound fails.
+TEST(ContactGatesHaveTeeth, SoftWallAgainstTheHardWallValueFails) {
+  Case wrong = named_case("elastica-contact/soft-wall");
+  const auto original = wrong.run_level;
+  wrong.run_level = [original](const Parameters& p, double level) {
+    LevelOutput out = original(p, level);
+    auto& P = out.metrics.at("P_vs_table");
+    P.reference = out.metrics.at("P_vs_hard").reference;
+    P.error = std::abs(P.computed - *P.reference);
+    return out;
+  };
+  const auto result = run_sweep(wrong, wrong.info.parameters, wrong.info.resolution.default_levels);
+  EXPECT_FALSE(result.passed());
+}
+
+TEST(ContactCases, ShorteningBeyondTheTabulatedBranchIsRejected) {
+  const Case& c = named_case("elastica-contact/cavity-line/polygon");
+  Parameters p = c.info.parameters;
+  set_parameter(p, "shortening", 0.095);
+  try {
+    c.check_parameters(p);
+    ADD_FAILURE() << "no InputError";
+  } catch (const rodvv::InputError& e) {
+    EXPECT_EQ(e.parameter(), "shortening");
+  }
+}
+
+}  // namespace
