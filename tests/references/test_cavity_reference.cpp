@@ -1,16 +1,41 @@
-// references/cavity.hpp against the tables of PHYSICS.md §4.1 (mpmath, 40 digits, printed with 12-13
-// significant digits). Tolerance: half a unit in the 12th significant digit is 5e-12 relative; x 2
-// = 1e-11 (the double evaluation itself is ~1e-14).
+// references/cavity.hpp (PHYSICS.md §4.1), checked two ways:
+//
+// 1. Against tests/data/cavity_reference.csv, written by tests/data/make_cavity_table.py: mpmath at
+//    34 digits, tanh-sinh quadrature of the first integral phi'^2 = 2 lambda^2 (cos phi - cos phi0)
+//    for arc length and position, with bisection + Illinois root solves. It uses no elliptic
+//    function, so it is independent of the Carlson/Jacobi closed forms in references/src/cavity.cpp.
+//    Every input (psi, l, d, a = 0.1) is a binary64 value stored in round-trip form.
+//    Error unit: eps relative to max(|expected|, scale), scale = EI/L^2 for loads and H, 1/L for
+//    kappa, 1 for angles, L for lengths (the shortening is L - chord, so its error is a fraction
+//    of L). Tolerance per row: 64 eps (1 + cond), with cond the relative condition number of the
+//    quantity with respect to the row's input (psi, l or d), measured by a central difference of
+//    the C++ function itself; the 64 covers the few-eps evaluation of the closed forms and the
+//    TOMS 748 root solves (eps_tolerance); inversion rows magnify cond by L/d (see condition()).
+//    Measured maxima (x86-64, Release; printed as "[ summary  ]" lines): direct rows (psi, l, touch,
+//    transition) <= 29 eps (kappa_c; P, H, 2Q <= 16 eps), <= 0.10 of the tolerance; inversions from
+//    d <= 2758 eps (wall force near touch; P 847 eps, H 891 eps), <= 0.025 of the tolerance.
+// 2. Against the 12-13 digit values printed in PHYSICS.md §4.1. Tolerance: half a unit in the 12th
+//    significant digit is 5e-12 relative; x 2 = 1e-11.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <map>
 #include <numbers>
+#include <set>
+#include <string>
+#include <vector>
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/references/cavity.hpp"
+#include "rodvv/testing/reference_table.hpp"
 #include "rodvv/testing/tolerance.hpp"
 
 namespace {
 namespace ref = rodvv::references;
+using rodvv::testing::kEpsilon;
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kTol = 1e-11;
 const ref::CavityColumn kColumn{};  // L = EI = 1, a = 0.1
@@ -121,5 +146,150 @@ TEST(CavityReference, BadInputNamesTheParameter) {
   expect([] { ref::cavity_point_contact({1.0, 1.0, 0.1}, 0.5); }, "psi");
   expect([] { ref::cavity_point_contact({-1.0, 1.0, 0.1}, 0.05); }, "L");
 }
+
+// ------------------------------------------------------------------------------------------------
+// The mpmath table (long format: kind,param,quantity,value).
+
+struct TableRow {
+  std::string kind;  // point_psi, line_l, shortening, touch, transition
+  double param;      // psi [rad], flat length l, shortening d; NaN for touch / transition
+  std::string quantity;
+  double value;
+};
+
+const std::vector<TableRow>& table() {
+  static const std::vector<TableRow> rows = [] {
+    std::vector<TableRow> out;
+    for (const auto& f : rodvv::testing::read_reference_table("cavity_reference.csv", "kind,param,quantity,value"))
+      out.push_back({f[0], rodvv::testing::parse_table_number(f[1]), f[2], rodvv::testing::parse_table_number(f[3])});
+    return out;
+  }();
+  return rows;
+}
+
+double field(const ref::CavityState& s, const std::string& q) {
+  if (q == "regime") return static_cast<double>(s.regime);
+  if (q == "P") return s.P;
+  if (q == "H") return s.H;
+  if (q == "wall_force") return s.wall_force;
+  if (q == "edge_force") return s.edge_force;
+  if (q == "kappa_mid") return s.kappa_mid;
+  if (q == "flat_length") return s.flat_length;
+  if (q == "psi") return s.psi;
+  if (q == "phi0") return s.phi0;
+  if (q == "theta0") return s.theta0;
+  if (q == "shortening") return s.shortening;
+  ADD_FAILURE() << "unknown quantity " << q;
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+// The C++ value of a row's quantity with the row's input replaced by x.
+double evaluate(const ref::CavityColumn& c, const TableRow& row, double x) {
+  if (row.kind == "touch") return ref::cavity_touch_shortening(c);
+  if (row.kind == "transition") return ref::cavity_transition_shortening(c);
+  if (row.kind == "point_psi") return field(ref::cavity_point_contact(c, x), row.quantity);
+  if (row.kind == "line_l") return field(ref::cavity_line_contact(c, x), row.quantity);
+  if (row.kind == "shortening") return field(ref::cavity_from_shortening(c, x), row.quantity);
+  ADD_FAILURE() << "unknown kind " << row.kind;
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+double scale_of(const TableRow& row) {
+  const std::string& q = row.quantity;
+  if (q == "P" || q == "H" || q == "wall_force" || q == "edge_force") return kColumn.EI / (kColumn.L * kColumn.L);
+  if (q == "kappa_mid") return 1.0 / kColumn.L;
+  if (q == "flat_length" || q == "shortening") return kColumn.L;
+  return 1.0;  // regime, psi, phi0, theta0
+}
+
+double reference_size(const TableRow& row) { return std::max(std::abs(row.value), scale_of(row)); }
+
+// Relative condition number of the quantity w.r.t. the row's input x: |x f'(x)| / size, from a
+// backward difference with h = 1e-6 x (backward: l = 0.6 L is the end of the range). Its own
+// error, O(h) + O(eps/h) relative, is irrelevant for a tolerance factor. 0 for an exact zero input
+// and for the scalar rows (their input is the column, which is exact).
+double condition(const TableRow& row) {
+  if (std::isnan(row.param) || row.param == 0.0 || row.quantity == "regime") return 0.0;
+  const double h = 1e-6 * row.param;
+  const double slope = (evaluate(kColumn, row, row.param) - evaluate(kColumn, row, row.param - h)) / h;
+  // Inversion rows: the forward map d = L - chord is accurate only to ~eps L (a cancellation), so
+  // the root solve's residual floor is eps L, not eps d: the relative condition number is
+  // magnified by L / d (~40 here).
+  const double magnification = row.kind == "shortening" ? kColumn.L / row.param : 1.0;
+  return magnification * std::abs(row.param * slope) / reference_size(row);
+}
+
+// 64 eps (1 + cond): see the file comment.
+constexpr double kTableFactor = 64.0;
+double tolerance_of(const TableRow& row) { return kTableFactor * kEpsilon * (1.0 + condition(row)) * reference_size(row); }
+
+TEST(CavityReference, TableCoversAllBranches) {
+  std::set<std::string> kinds;
+  std::set<double> regimes;
+  for (const TableRow& row : table()) {
+    kinds.insert(row.kind);
+    if (row.quantity == "regime") regimes.insert(row.value);
+  }
+  EXPECT_EQ(kinds, (std::set<std::string>{"point_psi", "line_l", "shortening", "touch", "transition"}));
+  EXPECT_EQ(regimes, (std::set<double>{0.0, 1.0, 2.0}));  // free, point and line inversions
+  EXPECT_GE(table().size(), 150u);
+}
+
+TEST(CavityReference, MatchesQuadratureTable) {
+  std::map<std::string, double> worst_eps, worst_ratio;
+  for (const TableRow& row : table()) {
+    const double actual = evaluate(kColumn, row, row.param);
+    const std::string key = row.kind + ":" + row.quantity;
+    if (row.quantity == "regime") {
+      EXPECT_EQ(actual, row.value) << row.kind << " " << row.param;
+      continue;
+    }
+    const double tol = tolerance_of(row);
+    const double err = std::abs(actual - row.value);
+    EXPECT_TRUE(rodvv::testing::is_close(actual, row.value, 0.0, tol))
+        << row.kind << " param " << row.param << " " << row.quantity << " cond " << condition(row);
+    worst_eps[key] = std::max(worst_eps[key], err / (kEpsilon * reference_size(row)));
+    worst_ratio[key] = std::max(worst_ratio[key], err / tol);
+  }
+  for (const auto& [key, eps] : worst_eps) {
+    std::cout << "[ summary  ] cavity " << key << ": max error " << eps << " eps (" << worst_ratio[key]
+              << " of the tolerance)\n";
+    ::testing::Test::RecordProperty("max_error_eps_" + key, std::to_string(eps));
+  }
+}
+
+// Teeth: every table value moved by one part in 1e12 (1e10 for the inversions; below the 12-digit
+// PHYSICS.md table, so the old gate could not see it) must be rejected by the same comparison; and a wall gap off by 1e-9
+// must turn every gap-sensitive row red.
+TEST(CavityReference, PerturbedTableValueOrGapFails) {
+  int red = 0, total = 0;
+  for (const TableRow& row : table()) {
+    if (row.quantity == "regime") continue;
+    const double actual = evaluate(kColumn, row, row.param);
+    // 1e-12 for the direct rows; the inversions are conditioned up to ~1e4 (the tolerance reaches
+    // ~1e-11 relative there), so they get 1e-10, still below the PHYSICS.md sheet's last digit.
+    const double shift = row.kind == "shortening" ? 1e-10 : 1e-12;
+    const double perturbed = row.value + shift * reference_size(row);
+    ++total;
+    if (!rodvv::testing::is_close(actual, perturbed, 0.0, tolerance_of(row))) ++red;
+    else ADD_FAILURE() << "perturbed value accepted: " << row.kind << " " << row.param << " " << row.quantity;
+  }
+  std::cout << "[ summary  ] cavity: " << red << " / " << total << " perturbed values rejected\n";
+  const ref::CavityColumn wrong{kColumn.L, kColumn.EI, kColumn.gap * (1 + 1e-9)};
+  int gap_red = 0, gap_total = 0;
+  for (const TableRow& row : table()) {
+    if (row.quantity == "regime" || row.value == 0.0) continue;
+    if (row.kind == "shortening" && row.quantity == "shortening") continue;  // the input itself
+    // Free rows do not feel the wall.
+    if (row.kind == "shortening" && row.param < 0.0250667) continue;
+    ++gap_total;
+    const double moved = evaluate(wrong, row, row.param);
+    if (!rodvv::testing::is_close(moved, row.value, 0.0, tolerance_of(row))) ++gap_red;
+    else ADD_FAILURE() << "wrong gap accepted: " << row.kind << " " << row.param << " " << row.quantity;
+  }
+  std::cout << "[ summary  ] cavity: " << gap_red << " / " << gap_total << " rows red for a gap off by 1e-9\n";
+  EXPECT_GT(gap_total, 50);
+}
+
 
 }  // namespace
