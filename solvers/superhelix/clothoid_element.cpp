@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <string>
 
 #include "rodvv/common/errors.hpp"
@@ -12,21 +13,45 @@ namespace rodvv::solvers::superhelix {
 
 namespace {
 
+using Complex = std::complex<double>;
+using Mat3c = Eigen::Matrix<Complex, 3, 3>;
+using Vec3c = Eigen::Matrix<Complex, 3, 1>;
+
+template <typename Scalar>
+Eigen::Matrix<Scalar, 3, 3> skew_t(const Eigen::Matrix<Scalar, 3, 1>& a) {
+  Eigen::Matrix<Scalar, 3, 3> m;
+  const Scalar zero(0.0);
+  m << zero, -a.z(), a.y(), a.z(), zero, -a.x(), -a.y(), a.x(), zero;
+  return m;
+}
+
+template <typename Scalar>
+struct Pose {
+  Eigen::Matrix<Scalar, 3, 3> R;
+  Eigen::Matrix<Scalar, 3, 1> r;
+  std::size_t max_terms = 0;
+};
+
 // One sub-interval of length h from the identity with strain a + s b (s from its own origin).
-ClothoidPose series_piece(const Vec3& a, const Vec3& b, double h, double tolerance) {
-  const Mat3 Xa = skew(a), Xb = skew(b);
-  const Vec3 e0 = Vec3::UnitX();
-  Mat3 previous = Mat3::Zero();      // A_{k-1} h^(k-1)
-  Mat3 current = Mat3::Identity();   // A_k h^k
-  ClothoidPose pose;
-  pose.R = Mat3::Identity();
+// Templated so that the same recurrence runs on complex numbers for the complex-step derivative.
+template <typename Scalar>
+Pose<Scalar> series_piece(const Eigen::Matrix<Scalar, 3, 1>& a, const Eigen::Matrix<Scalar, 3, 1>& b, double h,
+                          double tolerance) {
+  using M3 = Eigen::Matrix<Scalar, 3, 3>;
+  using V3 = Eigen::Matrix<Scalar, 3, 1>;
+  const M3 Xa = skew_t<Scalar>(a), Xb = skew_t<Scalar>(b);
+  const V3 e0 = V3::UnitX();
+  M3 previous = M3::Zero();      // A_{k-1} h^(k-1)
+  M3 current = M3::Identity();   // A_k h^k
+  Pose<Scalar> pose;
+  pose.R = M3::Identity();
   pose.r = h * e0;  // k = 0 term of r: A_0 e0 h
   int small_terms = 0;
   constexpr std::size_t kMaxTerms = 200;
   std::size_t k = 0;
   for (; k < kMaxTerms; ++k) {
     // (k+1) A_{k+1} h^(k+1) = (A_k h^k) [a]x h + (A_{k-1} h^(k-1)) [b]x h^2
-    const Mat3 next = (current * Xa * h + previous * Xb * (h * h)) / static_cast<double>(k + 1);
+    const M3 next = (current * Xa * h + previous * Xb * (h * h)) / static_cast<double>(k + 1);
     pose.R += next;
     pose.r += (next * e0) * (h / static_cast<double>(k + 2));
     previous = current;
@@ -39,14 +64,34 @@ ClothoidPose series_piece(const Vec3& a, const Vec3& b, double h, double toleran
   if (k == kMaxTerms)
     throw SolverError("super-clothoid series", "no convergence in " + std::to_string(kMaxTerms) + " terms", k,
                       current.cwiseAbs().maxCoeff());
-  pose.pieces = 1;
   pose.max_terms = k + 2;
   return pose;
 }
 
-}  // namespace
+// Sub-interval count: largest strain on the element times h at most 2 (ALGORITHMS.md §2). Computed
+// from the real parts only, so that a complex-step perturbation does not change the subdivision.
+std::size_t piece_count(const Vec3& a, const Vec3& b, double ell) {
+  const double strain = a.norm() + b.norm() * ell;
+  return static_cast<std::size_t>(std::max(1.0, std::ceil(strain * ell / 2.0)));
+}
 
-ClothoidPose clothoid_element(const Vec3& a, const Vec3& b, double ell, double tolerance) {
+template <typename Scalar>
+Pose<Scalar> compose_pieces(const Eigen::Matrix<Scalar, 3, 1>& a, const Eigen::Matrix<Scalar, 3, 1>& b, double ell,
+                            std::size_t pieces, double tolerance) {
+  const double h = ell / static_cast<double>(pieces);
+  Pose<Scalar> pose;
+  pose.R = Eigen::Matrix<Scalar, 3, 3>::Identity();
+  pose.r = Eigen::Matrix<Scalar, 3, 1>::Zero();
+  for (std::size_t j = 0; j < pieces; ++j) {
+    const Pose<Scalar> piece = series_piece<Scalar>(a + (static_cast<double>(j) * h) * b, b, h, tolerance);
+    pose.r += pose.R * piece.r;
+    pose.R = pose.R * piece.R;
+    pose.max_terms = std::max(pose.max_terms, piece.max_terms);
+  }
+  return pose;
+}
+
+void validate_element(const Vec3& a, const Vec3& b, double ell, double tolerance) {
   for (int i = 0; i < 3; ++i) {
     require_finite("a", a[i]);
     require_finite("b", b[i]);
@@ -55,21 +100,48 @@ ClothoidPose clothoid_element(const Vec3& a, const Vec3& b, double ell, double t
   if (!(tolerance > 0.0 && tolerance <= 1e-6))
     throw InputError("tolerance", "invalid parameter 'tolerance' = " + format_value(tolerance) +
                                       ": must be a number in (0, 1e-6]");
-  // Sub-interval length: largest strain on the element times h at most 2 (ALGORITHMS.md §2).
-  const double strain = a.norm() + b.norm() * ell;
-  const auto pieces = static_cast<std::size_t>(std::max(1.0, std::ceil(strain * ell / 2.0)));
-  const double h = ell / static_cast<double>(pieces);
-  ClothoidPose pose;
-  pose.R = Mat3::Identity();
-  pose.r = Vec3::Zero();
-  for (std::size_t j = 0; j < pieces; ++j) {
-    const ClothoidPose piece = series_piece(a + (static_cast<double>(j) * h) * b, b, h, tolerance);
-    pose.r += pose.R * piece.r;
-    pose.R = pose.R * piece.R;
-    pose.max_terms = std::max(pose.max_terms, piece.max_terms);
+}
+
+}  // namespace
+
+ClothoidPose clothoid_element(const Vec3& a, const Vec3& b, double ell, double tolerance) {
+  validate_element(a, b, ell, tolerance);
+  const std::size_t pieces = piece_count(a, b, ell);
+  const Pose<double> pose = compose_pieces<double>(a, b, ell, pieces, tolerance);
+  ClothoidPose out;
+  out.R = pose.R;
+  out.r = pose.r;
+  out.pieces = pieces;
+  out.max_terms = pose.max_terms;
+  return out;
+}
+
+ClothoidJacobian clothoid_element_jacobian(const Vec3& a, const Vec3& b, double ell, double tolerance) {
+  validate_element(a, b, ell, tolerance);
+  const std::size_t pieces = piece_count(a, b, ell);
+  const Pose<double> pose = compose_pieces<double>(a, b, ell, pieces, tolerance);
+  ClothoidJacobian out;
+  out.R = pose.R;
+  out.r = pose.r;
+  // Complex step: f'(p) = Im f(p + i t) / t with no subtractive cancellation, so t can be tiny
+  // (1e-30 relative to the strain scale) and the derivative is exact to round-off. The series
+  // tolerance test uses |.| of complex terms, i.e. the real part to O(t^2) = 0 in double.
+  const double scale = std::max({a.norm(), b.norm() * ell, 1.0 / ell});
+  const double t = 1e-30 * scale;
+  for (int p = 0; p < 6; ++p) {
+    Vec3c ac = a.cast<Complex>(), bc = b.cast<Complex>();
+    if (p < 3)
+      ac[p] += Complex(0.0, t);
+    else
+      bc[p - 3] += Complex(0.0, t);
+    const Pose<Complex> perturbed = compose_pieces<Complex>(ac, bc, ell, pieces, tolerance);
+    const Mat3 dR = perturbed.R.imag() / t;
+    // dR/dp = [Theta_p]x R  =>  [Theta_p]x = dR R^T (skew up to round-off; take its axial part).
+    const Mat3 W = dR * pose.R.transpose();
+    out.rotation.col(p) = 0.5 * Vec3(W(2, 1) - W(1, 2), W(0, 2) - W(2, 0), W(1, 0) - W(0, 1));
+    out.translation.col(p) = perturbed.r.imag() / t;
   }
-  pose.pieces = pieces;
-  return pose;
+  return out;
 }
 
 }  // namespace rodvv::solvers::superhelix

@@ -33,7 +33,7 @@ INSTANTIATE_TEST_SUITE_P(AllSuperHelixCases, SuperHelixCase,
                          });
 
 TEST(SuperHelixCatalogue, HasEveryCase) {
-  EXPECT_EQ(rodvv::testing::case_names_of_family("superhelix").size(), 7u);
+  EXPECT_EQ(rodvv::testing::case_names_of_family("superhelix").size(), 8u);
 }
 
 TEST(SuperHelixGatesHaveTeeth, SecondOrderClaimedAsFourthFails) {
@@ -43,6 +43,30 @@ TEST(SuperHelixGatesHaveTeeth, SecondOrderClaimedAsFourthFails) {
   Case modes = named("superhelix/modes");
   modes.gates = {order_gate("omega1", 4.0, "wrong claim")};
   EXPECT_FALSE(run_at_default_levels(modes).passed());
+}
+
+TEST(SuperHelixGatesHaveTeeth, ClothoidFourthOrderClaimedAsSecondOrSixthFails) {
+  // The two-sided order window [p - 0.1, p + 0.5] rejects both the Super-Helix's 2 and 6.
+  for (double claimed : {2.0, 6.0}) {
+    Case wrong = named("superhelix/clothoid-mattiasson-2");
+    wrong.gates = {order_gate("tip_w", claimed, "wrong claim")};
+    EXPECT_FALSE(run_at_default_levels(wrong).passed()) << claimed;
+  }
+  // A 1e-4 relative change of the load seen by the solver (not by the reference) moves the tip by
+  // ~1e-5 >> the C h^4 bound 3.2e-7 at N = 8.
+  Case perturbed = named("superhelix/clothoid-mattiasson-2");
+  const auto runner = perturbed.run_level;
+  perturbed.run_level = [runner](const Parameters& p, double level) {
+    Parameters shifted = p;
+    set_parameter(shifted, "alpha", parameter_value(p, "alpha") * (1.0 + 1e-4));
+    LevelOutput solved = runner(shifted, level);
+    const LevelOutput exact = runner(p, level);
+    auto& w = solved.metrics["tip_w"];
+    w.reference = exact.metrics.at("tip_w").reference;
+    w.error = std::abs(w.computed - *w.reference);
+    return solved;
+  };
+  EXPECT_FALSE(run_at_default_levels(perturbed).passed());
 }
 
 TEST(SuperHelixGatesHaveTeeth, FirstOrderEnergyLossClaimedAsSecondFails) {

@@ -28,4 +28,18 @@ struct ClothoidPose {
 
 ClothoidPose clothoid_element(const Vec3& a, const Vec3& b, double ell, double tolerance = 1e-17);
 
+// The pose at sigma = ell and its derivatives with respect to p = (a_0, a_1, a_2, b_0, b_1, b_2),
+// in the element's own base frame: rotation.col(p) = Theta_p with dR/dp = [Theta_p]x R (§1.3),
+// translation.col(p) = dr/dp. Computed by complex-step differentiation of the same series (the
+// subdivision is fixed by the real strains), so the derivatives are exact to round-off. Same
+// InputError as clothoid_element.
+struct ClothoidJacobian {
+  Mat3 R;
+  Vec3 r;
+  Eigen::Matrix<double, 3, 6> rotation;
+  Eigen::Matrix<double, 3, 6> translation;
+};
+
+ClothoidJacobian clothoid_element_jacobian(const Vec3& a, const Vec3& b, double ell, double tolerance = 1e-17);
+
 }  // namespace rodvv::solvers::superhelix

@@ -9,7 +9,7 @@
 // a dead end moment is not conservative for general 3-D rotations (Ziegler), so the Jacobian is
 // not symmetric in general and Newton works on r itself.
 //
-// Newton: Jacobian dr/dq by central differences of the O(N) residual (3N columns; step
+// Newton (newton.hpp, shared with the super-clothoid): Jacobian dr/dq by central differences of the O(N) residual (3N columns; step
 // cbrt(eps) max(|q_j|, 1/L), truncation error ~1e-11 relative, so Newton converges linearly with a
 // contraction ~1e-10 per iteration, indistinguishable from quadratic here), LU with partial
 // pivoting, backtracking line search on 1/2 |r|^2 (Armijo 1e-4, step halved down to 2^-30).
@@ -22,21 +22,9 @@
 
 #include "rodvv/common/eigen_types.hpp"
 #include "rodvv/solvers/superhelix/model.hpp"
+#include "rodvv/solvers/superhelix/newton.hpp"
 
 namespace rodvv::solvers::superhelix {
-
-struct StaticOptions {
-  std::size_t load_steps = 1;       // >= 1
-  std::size_t max_iterations = 50;  // per load step, >= 1
-  double tolerance = 1e-12;         // relative, in (0, 1)
-  VecX initial_q;                   // empty: start from q0
-};
-
-struct StaticResult {
-  VecX q;
-  std::size_t iterations = 0;  // Newton iterations over all load steps
-  double residual = 0.0;       // final |r|_inf
-};
 
 VecX static_residual(const RodModel& model, const VecX& q, double load_factor = 1.0);
 MatX static_jacobian(const RodModel& model, const VecX& q, double load_factor = 1.0);

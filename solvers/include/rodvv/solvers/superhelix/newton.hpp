@@ -1,0 +1,49 @@
+#pragma once
+// Newton with load stepping on a generalised-force residual r(q, lambda) = K (q - q0) - lambda F(q),
+// shared by the Super-Helix (statics.hpp) and the super-clothoid (clothoid_statics.hpp) rods: only
+// the residual differs between the two element types.
+//
+// Jacobian dr/dq by central differences of the residual (step cbrt(eps) max(|q_j|, 1/L), truncation
+// error ~1e-11 relative), LU with partial pivoting, backtracking line search on 1/2 |r|^2 (Armijo
+// 1e-4, step halved down to 2^-30). Load stepping: lambda_k = k / load_steps, each step starting
+// from the previous one. Convergence: |r|_inf <= tolerance * scale, scale = max(k_max |q|_inf,
+// k_max / L, load_scale), or a Newton step at round-off (|dq|_inf L <= 64 eps (1 + |q|_inf L)).
+// Failure: rodvv::SolverError(method, ...) with iterations and residual.
+#include <cstddef>
+#include <functional>
+#include <string>
+
+#include "rodvv/common/eigen_types.hpp"
+
+namespace rodvv::solvers::superhelix {
+
+struct StaticOptions {
+  std::size_t load_steps = 1;       // >= 1
+  std::size_t max_iterations = 50;  // per load step, >= 1
+  double tolerance = 1e-12;         // relative, in (0, 1)
+  VecX initial_q;                   // empty: start from q0
+};
+
+struct StaticResult {
+  VecX q;
+  std::size_t iterations = 0;  // Newton iterations over all load steps
+  double residual = 0.0;       // final |r|_inf
+};
+
+using StaticResidual = std::function<VecX(const VecX& q, double load_factor)>;
+
+// Scales of the convergence test (see above).
+struct NewtonScales {
+  double stiffness_max = 1.0;  // |K|_inf
+  double length = 1.0;         // L
+  double load_scale = 0.0;     // |F_ext(q0)|_inf at full load
+};
+
+MatX central_difference_jacobian(const StaticResidual& residual, const VecX& q, double load_factor,
+                                 double length);
+
+// Validates the options (InputError names load_steps / max_iterations / tolerance / initial_q).
+StaticResult newton_load_stepping(const StaticResidual& residual, const VecX& q0, const NewtonScales& scales,
+                                  const StaticOptions& options, const std::string& method);
+
+}  // namespace rodvv::solvers::superhelix

@@ -1,0 +1,112 @@
+#include "rodvv/solvers/superhelix/clothoid_statics.hpp"
+
+#include <string>
+
+#include "rodvv/common/errors.hpp"
+
+namespace rodvv::solvers::superhelix {
+
+void validate_clothoid(const RodModel& model) {
+  validate(model);
+  if (!model.natural_strain_per_element.empty())
+    throw InputError("natural_strain_per_element",
+                     "invalid parameter 'natural_strain_per_element': must be empty for the super-clothoid "
+                     "(nodal strains; use natural_strain)");
+}
+
+VecX clothoid_natural_strain_vector(const RodModel& model) {
+  VecX q0(static_cast<Eigen::Index>(clothoid_dof_count(model)));
+  for (std::size_t j = 0; j <= model.elements; ++j) q0.segment<3>(3 * j) = model.natural_strain;
+  return q0;
+}
+
+MatX clothoid_stiffness(const RodModel& model) {
+  const auto n = static_cast<Eigen::Index>(clothoid_dof_count(model));
+  MatX K = MatX::Zero(n, n);
+  const double ell = element_length(model);
+  const Mat3 C = model.stiffness.asDiagonal();
+  for (std::size_t e = 0; e < model.elements; ++e) {
+    const auto i = static_cast<Eigen::Index>(3 * e);
+    K.block<3, 3>(i, i) += (ell / 3.0) * C;
+    K.block<3, 3>(i + 3, i + 3) += (ell / 3.0) * C;
+    K.block<3, 3>(i, i + 3) += (ell / 6.0) * C;
+    K.block<3, 3>(i + 3, i) += (ell / 6.0) * C;
+  }
+  return K;
+}
+
+VecX clothoid_generalised_force(const ClothoidKinematics& kinematics, const std::vector<Vec3>& point_forces,
+                                const Vec3& tip_force, const Vec3& tip_moment) {
+  const std::size_t n = kinematics.elements(), per = kinematics.points_per_element();
+  VecX force = VecX::Zero(static_cast<Eigen::Index>(3 * (n + 1)));
+  Vec3 moment_about_next = tip_moment;  // moment of everything downstream about p_{Q+1}
+  Vec3 resultant = tip_force;
+  const auto& points = kinematics.points();
+  if (!point_forces.empty() && point_forces.size() != points.size())
+    throw InputError("point_forces", "invalid parameter 'point_forces': must be empty or hold one force per "
+                                     "Gauss point (" + std::to_string(points.size()) + ")");
+  for (std::size_t e = n; e-- > 0;) {
+    Eigen::Matrix<double, 6, 1> generalised = kinematics.end_rotation_jacobian(e).transpose() * moment_about_next +
+                                              kinematics.end_translation_jacobian(e).transpose() * resultant;
+    moment_about_next += (kinematics.base_position(e + 1) - kinematics.base_position(e)).cross(resultant);
+    if (!point_forces.empty()) {
+      for (std::size_t g = 0; g < per; ++g) {
+        const ClothoidPoint& point = points[e * per + g];
+        const Vec3& f = point_forces[e * per + g];
+        generalised += point.local_jacobian.transpose() * f;
+        moment_about_next += point.offset.cross(f);
+        resultant += f;
+      }
+    }
+    force.segment<6>(static_cast<Eigen::Index>(3 * e)) += generalised;  // nodes e and e + 1
+  }
+  return force;
+}
+
+VecX clothoid_external_force(const RodModel& model, const ClothoidKinematics& kinematics, double load_factor) {
+  std::vector<Vec3> gravity;
+  if (!model.gravity.isZero(0.0)) {
+    if (kinematics.points().empty())
+      throw InputError("kinematics", "invalid parameter 'kinematics': built without Gauss points, but gravity "
+                                     "is non-zero (construct it with with_points = true)");
+    gravity.reserve(kinematics.points().size());
+    for (const auto& point : kinematics.points()) gravity.push_back(load_factor * point.mass * model.gravity);
+  }
+  return clothoid_generalised_force(kinematics, gravity, load_factor * model.end_force,
+                                    load_factor * model.end_moment);
+}
+
+double clothoid_elastic_energy(const RodModel& model, const VecX& q) {
+  const VecX strain = q - clothoid_natural_strain_vector(model);
+  return 0.5 * strain.dot(clothoid_stiffness(model) * strain);
+}
+
+double clothoid_gravity_energy(const RodModel& model, const ClothoidKinematics& kinematics) {
+  double energy = 0.0;
+  for (const auto& point : kinematics.points()) energy -= point.mass * model.gravity.dot(point.position);
+  return energy;
+}
+
+VecX clothoid_static_residual(const RodModel& model, const VecX& q, double load_factor) {
+  const ClothoidKinematics kinematics(model, q, !model.gravity.isZero(0.0));
+  return clothoid_stiffness(model) * (q - clothoid_natural_strain_vector(model)) -
+         clothoid_external_force(model, kinematics, load_factor);
+}
+
+StaticResult solve_clothoid_static(const RodModel& model, const StaticOptions& options) {
+  validate_clothoid(model);
+  const VecX q0 = clothoid_natural_strain_vector(model);
+  const MatX K = clothoid_stiffness(model);
+  NewtonScales scales;
+  scales.stiffness_max = K.cwiseAbs().rowwise().sum().maxCoeff();
+  scales.length = model.length;
+  const bool with_points = !model.gravity.isZero(0.0);  // Gauss points only carry gravity
+  scales.load_scale =
+      clothoid_external_force(model, ClothoidKinematics(model, q0, with_points), 1.0).lpNorm<Eigen::Infinity>();
+  const StaticResidual residual = [&model, &K, &q0, with_points](const VecX& x, double lambda) {
+    return VecX(K * (x - q0) - clothoid_external_force(model, ClothoidKinematics(model, x, with_points), lambda));
+  };
+  return newton_load_stepping(residual, q0, scales, options, "super-clothoid Newton");
+}
+
+}  // namespace rodvv::solvers::superhelix

@@ -1,0 +1,104 @@
+#include "rodvv/solvers/superhelix/newton.hpp"
+
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
+
+namespace rodvv::solvers::superhelix {
+
+MatX central_difference_jacobian(const StaticResidual& residual, const VecX& q, double load_factor,
+                                 double length) {
+  const Eigen::Index n = q.size();
+  MatX J(n, n);
+  const double step_scale = std::cbrt(std::numeric_limits<double>::epsilon());
+  VecX shifted = q;
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const double step = step_scale * std::max(std::abs(q[j]), 1.0 / length);
+    shifted[j] = q[j] + step;
+    const VecX plus = residual(shifted, load_factor);
+    shifted[j] = q[j] - step;
+    const VecX minus = residual(shifted, load_factor);
+    shifted[j] = q[j];
+    J.col(j) = (plus - minus) / (2.0 * step);
+  }
+  return J;
+}
+
+StaticResult newton_load_stepping(const StaticResidual& static_residual, const VecX& q0,
+                                  const NewtonScales& scales, const StaticOptions& options,
+                                  const std::string& method) {
+  require_at_least("load_steps", options.load_steps, 1);
+  require_at_least("max_iterations", options.max_iterations, 1);
+  require_open_interval("tolerance", options.tolerance, 0.0, 1.0);
+  StaticResult result;
+  result.q = options.initial_q.size() == 0 ? q0 : options.initial_q;
+  if (result.q.size() != q0.size())
+    throw InputError("initial_q", "invalid parameter 'initial_q': must be empty or hold " +
+                                      std::to_string(q0.size()) + " values (one per degree of freedom)");
+  if (!result.q.allFinite()) throw InputError("initial_q", "invalid parameter 'initial_q': must be finite");
+  const double k_max = scales.stiffness_max, length = scales.length, load_scale = scales.load_scale;
+  constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+  for (std::size_t step = 1; step <= options.load_steps; ++step) {
+    const double lambda = static_cast<double>(step) / static_cast<double>(options.load_steps);
+    VecX residual = static_residual(result.q, lambda);
+    bool converged = false;
+    for (std::size_t iteration = 0; iteration < options.max_iterations; ++iteration) {
+      const double scale = std::max({k_max * result.q.lpNorm<Eigen::Infinity>(), k_max / length, load_scale});
+      const double norm = residual.lpNorm<Eigen::Infinity>();
+      if (norm <= options.tolerance * scale) {
+        converged = true;
+        break;
+      }
+      ++result.iterations;
+      const MatX J = central_difference_jacobian(static_residual, result.q, lambda, length);
+      const VecX direction = -J.partialPivLu().solve(residual);
+      if (!direction.allFinite()) throw SolverError(method, "singular Jacobian", result.iterations, norm);
+      // backtracking on 1/2 |r|^2
+      const double merit = residual.squaredNorm();
+      double alpha = 1.0;
+      VecX trial_q, trial_residual;
+      bool accepted = false;
+      for (int halving = 0; halving <= 30; ++halving, alpha *= 0.5) {
+        trial_q = result.q + alpha * direction;
+        trial_residual = static_residual(trial_q, lambda);
+        if (trial_residual.squaredNorm() <= (1.0 - 2e-4 * alpha) * merit) {
+          accepted = true;
+          break;
+        }
+      }
+      const bool round_off_step = direction.lpNorm<Eigen::Infinity>() * length <=
+                                  64.0 * kEps * (1.0 + result.q.lpNorm<Eigen::Infinity>() * length);
+      if (!accepted) {
+        if (round_off_step || norm <= 1e3 * options.tolerance * scale) {
+          converged = true;  // already at the round-off floor of the residual
+          break;
+        }
+        throw SolverError(method, "line search failed at load factor " + format_value(lambda), result.iterations,
+                          norm);
+      }
+      result.q = trial_q;
+      residual = trial_residual;
+      if (round_off_step) {
+        converged = true;
+        break;
+      }
+    }
+    result.residual = residual.lpNorm<Eigen::Infinity>();
+    if (!converged) {
+      const double scale = std::max({k_max * result.q.lpNorm<Eigen::Infinity>(), k_max / length, load_scale});
+      if (result.residual > options.tolerance * scale)
+        throw SolverError(method, "no convergence at load factor " + format_value(lambda), result.iterations,
+                          result.residual);
+    }
+  }
+  return result;
+}
+
+}  // namespace rodvv::solvers::superhelix
