@@ -25,6 +25,7 @@
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/solvers/elastica2d/buckling.hpp"
+#include "rodvv/testing/elastica2d_fixtures.hpp"
 #include "rodvv/testing/tolerance.hpp"
 
 namespace {
@@ -32,8 +33,11 @@ namespace {
 namespace e2 = rodvv::solvers::elastica2d;
 using e2::EndSupports;
 using e2::Scheme;
+using rodvv::testing::input_error_parameter_of;
 using rodvv::testing::is_close;
 using rodvv::testing::kEpsilon;
+using rodvv::testing::observed_order;
+using rodvv::testing::elastica2d::name_of;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kX1 = 4.49340945790906417530788;  // first positive root of tan x = x
@@ -65,21 +69,6 @@ e2::BucklingResult loads(EndSupports supports, Scheme scheme, std::size_t n, std
   return e2::critical_loads({supports, length, stiffness}, {scheme, n}, modes);
 }
 
-// Least-squares slope of log|e| against log h = log(1/N): the observed order.
-double observed_order(const std::vector<std::size_t>& levels, const std::vector<double>& errors) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double m = static_cast<double>(levels.size());
-  for (std::size_t i = 0; i < levels.size(); ++i) {
-    const double lx = std::log(1.0 / static_cast<double>(levels[i]));
-    const double ly = std::log(std::abs(errors[i]));
-    sx += lx;
-    sy += ly;
-    sxx += lx * lx;
-    sxy += lx * ly;
-  }
-  return (m * sxy - sx * sy) / (m * sxx - sx * sx);
-}
-
 // Relative error constants C = (P_h - P) / P * N^2 measured at N = 128 (probe run, 2026-11-21) for
 // modes 1 and 2; bounds below are 2 |C| h^2. Pinned-pinned has them in closed form: -/+ (k pi)^2 / 12
 // (from the discrete spectra of the next test): -0.8225 and -3.2899 (polygon).
@@ -104,7 +93,6 @@ MeasuredConstant constant_of(Scheme scheme, EndSupports supports) {
   return {};
 }
 
-std::string name_of(Scheme scheme) { return scheme == Scheme::Polygon ? "Polygon" : "Arcs"; }
 std::string name_of(EndSupports supports) {
   switch (supports) {
     case EndSupports::PinnedPinned:
@@ -133,16 +121,6 @@ double shape_error(const e2::BucklingMode& mode, Exact&& exact) {
   for (std::size_t j = 0; j < mode.s.size(); ++j)
     error = std::max(error, std::abs(c * mode.theta[j] - exact(mode.s[j])));
   return error;
-}
-
-template <class F>
-std::string input_error_parameter_of(F&& f) {
-  try {
-    f();
-  } catch (const rodvv::InputError& e) {
-    return e.parameter();
-  }
-  return "<no InputError>";
 }
 
 // ------------------------------------------------------------------------------------------------

@@ -24,6 +24,7 @@
 #include "rodvv/solvers/elastica2d/compliance.hpp"
 #include "rodvv/solvers/elastica2d/lagrangian.hpp"
 #include "rodvv/solvers/elastica2d/solve_static.hpp"
+#include "rodvv/testing/elastica2d_fixtures.hpp"
 #include "rodvv/testing/reference_table.hpp"
 #include "rodvv/testing/tolerance.hpp"
 
@@ -33,39 +34,18 @@ namespace e2 = rodvv::solvers::elastica2d;
 namespace ref = rodvv::references;
 using e2::Scheme;
 using e2::Support;
+using rodvv::testing::input_error_parameter_of;
 using rodvv::testing::is_close;
 using rodvv::testing::kEpsilon;
+using rodvv::testing::observed_order;
+using rodvv::testing::elastica2d::derivative_mismatch;
+using rodvv::testing::elastica2d::name_of;
+using rodvv::testing::elastica2d::random_state;
+using rodvv::testing::elastica2d::tight;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 const std::vector<std::size_t> kLevels{16, 32, 64, 128};
-
-std::string name_of(Scheme scheme) { return scheme == Scheme::Polygon ? "Polygon" : "Arcs"; }
-
-template <class F>
-std::string input_error_parameter_of(F&& f) {
-  try {
-    f();
-  } catch (const rodvv::InputError& e) {
-    return e.parameter();
-  }
-  return "<no InputError>";
-}
-
-// Least-squares slope of log|error| against log(1/N).
-double observed_order(const std::vector<std::size_t>& levels, const std::vector<double>& errors) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double m = static_cast<double>(levels.size());
-  for (std::size_t i = 0; i < levels.size(); ++i) {
-    const double lx = std::log(1.0 / static_cast<double>(levels[i]));
-    const double ly = std::log(std::abs(errors[i]));
-    sx += lx;
-    sy += ly;
-    sxx += lx * lx;
-    sxy += lx * ly;
-  }
-  return (m * sxy - sx * sy) / (m * sxx - sx * sx);
-}
 
 void print_errors(const std::string& what, const std::vector<std::size_t>& levels,
                   const std::vector<double>& errors, double order) {
@@ -82,12 +62,6 @@ e2::Problem tip_loaded_problem_for_invariant() {
   p.axial_stiffness = 100.0;
   p.shear_stiffness = 40.0;
   return p;
-}
-
-e2::SolverOptions tight() {
-  e2::SolverOptions o;
-  o.tolerance = 1e-12;  // the discretisation errors compared below are >= 1e-8
-  return o;
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -207,31 +181,6 @@ e2::Problem reissner_everything(Support end_support, double ea, double ga) {
   p.axial_stiffness = ea;
   p.shear_stiffness = ga;
   return p;
-}
-
-Eigen::VectorXd random_state(const e2::DiscreteLagrangian& lag, unsigned seed) {
-  std::srand(seed);
-  return 0.8 * Eigen::VectorXd::Random(static_cast<Eigen::Index>(lag.size()));
-}
-
-// Max |analytic - central difference| over gradient and Hessian, relative to max(1, |value|).
-double derivative_mismatch(const e2::DiscreteLagrangian& lag, const Eigen::VectorXd& z,
-                           const Eigen::MatrixXd& hess) {
-  const double d0 = std::cbrt(kEpsilon);
-  const Eigen::VectorXd g = lag.gradient(z);
-  double worst = 0.0;
-  for (Eigen::Index j = 0; j < z.size(); ++j) {
-    const double d = d0 * (1.0 + std::abs(z[j]));
-    Eigen::VectorXd zp = z, zm = z;
-    zp[j] += d;
-    zm[j] -= d;
-    const double fd = (lag.value(zp) - lag.value(zm)) / (2 * d);
-    worst = std::max(worst, std::abs(g[j] - fd) / std::max(1.0, std::abs(fd)) / (d * d));
-    const Eigen::VectorXd col = (lag.gradient(zp) - lag.gradient(zm)) / (2 * d);
-    for (Eigen::Index i = 0; i < z.size(); ++i)
-      worst = std::max(worst, std::abs(hess(i, j) - col[i]) / std::max(1.0, std::abs(col[i])) / (d * d));
-  }
-  return worst;  // in units of d^2
 }
 
 TEST_P(Elastica2dExtensibleDerivatives, GradientAndHessianMatchFiniteDifferences) {

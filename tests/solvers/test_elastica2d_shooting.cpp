@@ -28,6 +28,7 @@
 #include "rodvv/solvers/elastica2d/continuation.hpp"
 #include "rodvv/solvers/elastica2d/shooting.hpp"
 #include "rodvv/solvers/elastica2d/solve_static.hpp"
+#include "rodvv/testing/elastica2d_fixtures.hpp"
 #include "rodvv/testing/tolerance.hpp"
 
 namespace {
@@ -35,6 +36,8 @@ namespace {
 namespace e2 = rodvv::solvers::elastica2d;
 namespace ref = rodvv::references;
 using rodvv::testing::in_epsilons;
+using rodvv::testing::input_error_parameter_of;
+using rodvv::testing::elastica2d::pinned_column;  // pinned at s = 0, roller at s = L, dead load P
 using rodvv::testing::is_close;
 using rodvv::testing::kEpsilon;
 using e2::Support;
@@ -44,26 +47,8 @@ constexpr double kTau = 1e-13;  // ShootingOptions{}.ode_abs_tolerance = ode_rel
 constexpr double kBoundPerTau = 50.0;
 constexpr double kBound = kBoundPerTau * kTau;  // positions, angles (L = 1); curvature x kappa_max
 
-template <class F>
-std::string input_error_parameter_of(F&& f) {
-  try {
-    f();
-  } catch (const rodvv::InputError& e) {
-    return e.parameter();
-  }
-  return "<no InputError>";
-}
-
 // ---- problems and guesses ------------------------------------------------------------------------
 
-// Pinned at s = 0, roller (Sliding) at s = L with the dead compressive load P (load control).
-e2::Problem column_problem(double P) {
-  e2::Problem problem;
-  problem.start.support = Support::Pinned;
-  problem.end.support = Support::Sliding;
-  problem.end.load.force_x = -P;
-  return problem;
-}
 
 // A guess on the first-mode branch, as the harness obtains it: the discrete polygon (N = 32)
 // followed along the branch from 1.05 P_Euler to P.
@@ -127,7 +112,7 @@ class ShootingColumn : public ::testing::TestWithParam<double> {};
 TEST_P(ShootingColumn, MatchesEllipticClosedForm) {
   const double theta0 = GetParam() * kPi / 180.0;
   const ref::PinnedSolution exact = ref::pinned_solution({1.0, 1.0}, theta0);
-  const e2::Problem problem = column_problem(exact.P);
+  const e2::Problem problem = pinned_column(exact.P);
   const auto solution = e2::solve_shooting(problem, sampled(64), column_guess(problem, exact.P));
   const ColumnErrors e = column_errors(solution, theta0);
   std::printf("column %g deg: position %.3g (%.0f eps), angle %.3g, curvature %.3g (kappa_M %.3g), "
@@ -150,7 +135,7 @@ INSTANTIATE_TEST_SUITE_P(ThetaZero, ShootingColumn, ::testing::Values(60.0, 170.
 TEST(ShootingColumnHasTeeth, PerturbedLoadMissesClosedForm) {
   const double theta0 = 60.0 * kPi / 180.0;
   const ref::PinnedSolution exact = ref::pinned_solution({1.0, 1.0}, theta0);
-  const e2::Problem problem = column_problem(exact.P * (1.0 + 1e-6));
+  const e2::Problem problem = pinned_column(exact.P * (1.0 + 1e-6));
   const auto solution = e2::solve_shooting(problem, sampled(64), column_guess(problem, exact.P));
   EXPECT_GT(column_errors(solution, theta0).position, 1e-8);
 }
@@ -235,7 +220,7 @@ TEST(ShootingSupports, FreeAndSlidingStart) {
     problem.start.support = Support::Sliding;
     problem.start.load.force_x = exact.P;  // pushes the roller towards the pin at the origin
     problem.end.support = Support::Pinned;
-    e2::ShootingGuess guess = column_guess(column_problem(exact.P), exact.P);
+    e2::ShootingGuess guess = column_guess(pinned_column(exact.P), exact.P);
     guess.x = -0.7;  // roughly the chord
     const auto solution = e2::solve_shooting(problem, sampled(8), guess);
     EXPECT_LT(std::abs(solution.x.front() + exact.chord), kBound);
@@ -292,7 +277,7 @@ TEST(ShootingFlagpole, MatchesQuarterWave) {
 
 TEST(ShootingNoether, HConstantForUniformRod) {
   const ref::PinnedSolution exact = ref::pinned_solution({1.0, 1.0}, 170.0 * kPi / 180.0);
-  const e2::Problem problem = column_problem(exact.P);
+  const e2::Problem problem = pinned_column(exact.P);
   const auto solution = e2::solve_shooting(problem, sampled(256), column_guess(problem, exact.P));
   const auto spread = rodvv::invariants::planar_noether_spread(solution);
   std::printf("H spread (column 170): %.3g x scale %.3g, mean %.17g vs %.17g\n", spread.spread,
@@ -385,7 +370,7 @@ TEST(ShootingNoether, DriftMatchesPredictionForTaperedAndCurvedRods) {
 TEST(ShootingAccuracy, ErrorFollowsOdeTolerance) {
   const double theta0 = 170.0 * kPi / 180.0;
   const ref::PinnedSolution exact = ref::pinned_solution({1.0, 1.0}, theta0);
-  const e2::Problem problem = column_problem(exact.P);
+  const e2::Problem problem = pinned_column(exact.P);
   const e2::ShootingGuess guess = column_guess(problem, exact.P);
   std::vector<double> errors;
   for (double tau : {1e-9, 1e-11, 1e-13}) {

@@ -16,6 +16,7 @@
 #include "rodvv/solvers/superhelix/kinematics.hpp"
 #include "rodvv/solvers/superhelix/loads.hpp"
 #include "rodvv/solvers/superhelix/statics.hpp"
+#include "rodvv/testing/superhelix_fixtures.hpp"
 #include "rodvv/testing/tolerance.hpp"
 
 namespace {
@@ -84,17 +85,12 @@ TEST(SuperClothoidRod, RodJacobiansMatchFiniteDifferences) {
   const double h = 1e-6;
   for (auto [e, sigma] : {std::pair<std::size_t, double>{0, 0.2}, {2, 0.31}, {3, kin.element_length()}}) {
     const MatX Jr = kin.position_jacobian(e, sigma), Jt = kin.rotation_jacobian(e, sigma);
-    const Mat3 R = kin.frame(e, sigma);
+    // central differences with h = 1e-6: error ~ h^2 |f'''| + eps/h ~ 1e-10; gate 1e-8.
+    const auto fd =
+        rodvv::testing::superhelix::finite_difference_jacobians<sh::ClothoidKinematics>(model, q, e, sigma, h);
     for (Eigen::Index j = 0; j < q.size(); ++j) {
-      VecX qp = q, qm = q;
-      qp[j] += h;
-      qm[j] -= h;
-      const sh::ClothoidKinematics kp(model, qp), km(model, qm);
-      // central differences with h = 1e-6: error ~ h^2 |f'''| + eps/h ~ 1e-10; gate 1e-8.
-      const Vec3 dr = (kp.position(e, sigma) - km.position(e, sigma)) / (2 * h);
-      const Mat3 W = (kp.frame(e, sigma) - km.frame(e, sigma)) / (2 * h) * R.transpose();
-      EXPECT_LE((dr - Jr.col(j)).norm(), 1e-8) << e << " " << j;
-      EXPECT_LE((Vec3(W(2, 1), W(0, 2), W(1, 0)) - Jt.col(j)).norm(), 1e-8) << e << " " << j;
+      EXPECT_LE((fd.position.col(j) - Jr.col(j)).norm(), 1e-8) << e << " " << j;
+      EXPECT_LE((fd.rotation.col(j) - Jt.col(j)).norm(), 1e-8) << e << " " << j;
     }
   }
 }
@@ -160,12 +156,8 @@ TEST(SuperClothoidRod, EndMomentRollUpIsExactForAnyN) {
   // M = 2 pi EI2 / L about n2: a full circle, u2 = 2 pi at every node; the same tolerances as the
   // Super-Helix roll-up (Newton to the round-off floor: strain error ~ N eps |q|).
   for (std::size_t n : {1u, 2u, 3u, 8u}) {
-    sh::RodModel model;
-    model.elements = n;
-    model.stiffness = Vec3(0.7, 1.3, 2.0);
-    model.end_moment = Vec3(0.0, 0.0, 2 * kPi * model.stiffness[2] / model.length);
-    sh::StaticOptions options;
-    options.load_steps = 4;
+    const sh::RodModel model = rodvv::testing::superhelix::roll_up_model(n);
+    const sh::StaticOptions options = rodvv::testing::superhelix::roll_up_options();
     const auto result = sh::solve_clothoid_static(model, options);
     for (std::size_t j = 0; j <= n; ++j) {
       EXPECT_LE(std::abs(result.q[3 * j + 2] - 2 * kPi), 64.0 * double(n) * kEpsilon * 2 * kPi) << n;

@@ -9,11 +9,11 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
-#include <random>
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/solvers/superhelix/dynamics.hpp"
 #include "rodvv/solvers/superhelix/kinematics.hpp"
+#include "rodvv/testing/superhelix_fixtures.hpp"
 #include "rodvv/testing/tolerance.hpp"
 
 namespace {
@@ -24,14 +24,7 @@ using rodvv::MatX;
 using rodvv::Vec3;
 using rodvv::VecX;
 using rodvv::testing::kEpsilon;
-
-VecX random_vector(std::size_t n, double amplitude, unsigned seed) {
-  std::mt19937 gen(seed);
-  std::uniform_real_distribution<double> dist(-amplitude, amplitude);
-  VecX q(static_cast<Eigen::Index>(n));
-  for (auto& v : q) v = dist(gen);
-  return q;
-}
+using rodvv::testing::superhelix::random_vector;
 
 sh::RodModel loaded_model(std::size_t n) {
   sh::RodModel model;

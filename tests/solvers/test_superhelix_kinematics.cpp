@@ -9,7 +9,6 @@
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include <cmath>
-#include <random>
 #include <vector>
 
 #include "rodvv/common/errors.hpp"
@@ -17,6 +16,7 @@
 #include "rodvv/solvers/superhelix/kinematics.hpp"
 #include "rodvv/solvers/superhelix/loads.hpp"
 #include "rodvv/solvers/superhelix/model.hpp"
+#include "rodvv/testing/superhelix_fixtures.hpp"
 #include "rodvv/testing/tolerance.hpp"
 
 namespace {
@@ -28,12 +28,9 @@ using rodvv::Vec3;
 using rodvv::VecX;
 using rodvv::testing::kEpsilon;
 
+// 3 n random strains (n elements) in [-amplitude, amplitude].
 VecX random_q(std::size_t n, double amplitude, unsigned seed) {
-  std::mt19937 gen(seed);
-  std::uniform_real_distribution<double> dist(-amplitude, amplitude);
-  VecX q(static_cast<Eigen::Index>(3 * n));
-  for (auto& v : q) v = dist(gen);
-  return q;
+  return rodvv::testing::superhelix::random_vector(3 * n, amplitude, seed);
 }
 
 sh::RodModel random_model(std::size_t n) {
@@ -112,18 +109,12 @@ TEST(SuperHelixKinematics, JacobiansMatchFiniteDifferences) {
   for (std::size_t e : {0u, 2u, 4u}) {
     for (double sigma : {0.0, 0.1, kin.element_length()}) {
       const MatX J = kin.position_jacobian(e, sigma), Theta = kin.rotation_jacobian(e, sigma);
-      const Mat3 R = kin.frame(e, sigma);
+      // dR = [Theta]x R  ->  Theta = vee(dR R^T)
+      const auto fd =
+          rodvv::testing::superhelix::finite_difference_jacobians<sh::Kinematics>(model, q, e, sigma, step);
       for (Eigen::Index j = 0; j < q.size(); ++j) {
-        VecX qp = q, qm = q;
-        qp[j] += step;
-        qm[j] -= step;
-        const sh::Kinematics kp(model, qp), km(model, qm);
-        const Vec3 dr = (kp.position(e, sigma) - km.position(e, sigma)) / (2 * step);
-        EXPECT_LE((dr - J.col(j)).norm(), 1e-8) << "e " << e << " sigma " << sigma << " j " << j;
-        // dR = [Theta]x R  ->  Theta = vee(dR R^T)
-        const Mat3 W = (kp.frame(e, sigma) - km.frame(e, sigma)) / (2 * step) * R.transpose();
-        const Vec3 theta(W(2, 1), W(0, 2), W(1, 0));
-        EXPECT_LE((theta - Theta.col(j)).norm(), 1e-8) << "e " << e << " sigma " << sigma << " j " << j;
+        EXPECT_LE((fd.position.col(j) - J.col(j)).norm(), 1e-8) << "e " << e << " sigma " << sigma << " j " << j;
+        EXPECT_LE((fd.rotation.col(j) - Theta.col(j)).norm(), 1e-8) << "e " << e << " sigma " << sigma << " j " << j;
       }
     }
   }

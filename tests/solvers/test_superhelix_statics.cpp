@@ -10,6 +10,7 @@
 #include "rodvv/references/elastica.hpp"
 #include "rodvv/solvers/superhelix/kinematics.hpp"
 #include "rodvv/solvers/superhelix/statics.hpp"
+#include "rodvv/testing/superhelix_fixtures.hpp"
 #include "rodvv/testing/tolerance.hpp"
 
 namespace {
@@ -24,13 +25,8 @@ constexpr double kPi = std::numbers::pi;
 TEST(SuperHelixStatics, EndMomentRollUpIsExactForAnyN) {
   // M = 2 pi EI2 / L about n2: a full circle in the n0-n1 plane, u2 = M / EI2 on every element.
   for (std::size_t n : {1u, 2u, 3u, 8u, 32u}) {
-    sh::RodModel model;
-    model.elements = n;
-    model.stiffness = Vec3(0.7, 1.3, 2.0);
-    model.end_moment = Vec3(0.0, 0.0, 2 * kPi * model.stiffness[2] / model.length);
-    sh::StaticOptions options;
-    options.load_steps = 4;
-    const auto result = sh::solve_static(model, options);
+    const sh::RodModel model = rodvv::testing::superhelix::roll_up_model(n);
+    const auto result = sh::solve_static(model, rodvv::testing::superhelix::roll_up_options());
     for (std::size_t e = 0; e < n; ++e) {
       // Newton to the round-off floor: the strain error is ~ |r| / K ~ N eps (k|q|) / k.
       EXPECT_LE(std::abs(result.q[3 * e + 2] - 2 * kPi), 64.0 * double(n) * kEpsilon * 2 * kPi) << n;
