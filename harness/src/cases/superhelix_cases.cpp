@@ -231,67 +231,64 @@ LevelOutput run_helix(const Parameters& p, double level) {
 
 // ---- Mattiasson cantilever in 3-D ------------------------------------------------------------
 
-LevelOutput run_mattiasson(const Parameters& p, double level) {
+// The rotated-clamp cantilever shared by the Super-Helix and super-clothoid cases: clamp tangent
+// horizontal but rotated about the vertical by 30 deg, cross-section rolled by 40 deg, so the load
+// -P e_z bends the rod in a vertical plane that is no coordinate plane of the material frame (both
+// bending strains and the twist are unknowns).
+struct RotatedClampCantilever {
+  sh::RodModel model;
+  sh::StaticOptions options;
+  ref::CantileverTip tip;  // closed form (planar Mattiasson)
+};
+
+RotatedClampCantilever rotated_clamp_cantilever(const Parameters& p, double level) {
   const double L = parameter_value(p, "L"), EI = parameter_value(p, "EI"), alpha = parameter_value(p, "alpha");
   const ref::TipLoadedCantilever cantilever{L, EI, alpha * EI / (L * L)};
-  const auto tip = ref::cantilever_tip(cantilever);
-  // Clamp tangent horizontal but rotated about the vertical by 30 deg, cross-section rolled by
-  // 40 deg: the load -P e_z bends the rod in a vertical plane that is no coordinate plane of the
-  // material frame (both bending strains and the twist are unknowns).
   const Mat3 yaw = Eigen::AngleAxisd(kPi / 6, Vec3::UnitZ()).toRotationMatrix();
   const Mat3 roll = Eigen::AngleAxisd(40.0 * kPi / 180.0, Vec3::UnitX()).toRotationMatrix();
-  sh::RodModel model;
-  model.elements = element_count(level);
-  model.length = L;
-  model.stiffness = Vec3(0.8 * EI, EI, EI);
-  model.root_frame = yaw * roll;
-  model.end_force = Vec3(0.0, 0.0, -cantilever.P);
-  sh::StaticOptions options;
-  options.load_steps = alpha > 3.0 ? 4 : 2;
-  const auto result = sh::solve_static(model, options);
-  const sh::Kinematics kin(model, result.q);
-  const Vec3 t0 = model.root_frame.col(0);
-  const Vec3 r = kin.tip_position() - model.root_position;
-  const Vec3 t = kin.tip_frame().col(0);
+  RotatedClampCantilever problem{{}, {}, ref::cantilever_tip(cantilever)};
+  problem.model.elements = element_count(level);
+  problem.model.length = L;
+  problem.model.stiffness = Vec3(0.8 * EI, EI, EI);
+  problem.model.root_frame = yaw * roll;
+  problem.model.end_force = Vec3(0.0, 0.0, -cantilever.P);
+  problem.options.load_steps = alpha > 3.0 ? 4 : 2;
+  return problem;
+}
+
+// Tip displacements and rotation in the loading plane against the closed form, and the
+// out-of-plane drift, from the tip position and frame of either rod.
+LevelOutput rotated_clamp_tip_metrics(const RotatedClampCantilever& problem, const Vec3& tip_position,
+                                      const Mat3& tip_frame, std::size_t iterations) {
+  const double L = problem.model.length;
+  const Vec3 t0 = problem.model.root_frame.col(0);
+  const Vec3 r = tip_position - problem.model.root_position;
+  const Vec3 t = tip_frame.col(0);
   LevelOutput output;
-  output.metrics["tip_w"] = error_sample(-r.z(), tip.w);
-  output.metrics["tip_u"] = error_sample(L - r.dot(t0), tip.u);
-  output.metrics["tip_phi"] = error_sample(std::atan2(-t.z(), t.dot(t0)), tip.phi_L);
+  output.metrics["tip_w"] = error_sample(-r.z(), problem.tip.w);
+  output.metrics["tip_u"] = error_sample(L - r.dot(t0), problem.tip.u);
+  output.metrics["tip_phi"] = error_sample(std::atan2(-t.z(), t.dot(t0)), problem.tip.phi_L);
   output.metrics["out_of_plane"] = value_sample(std::abs(r.dot(Vec3::UnitZ().cross(t0))) / L);
-  output.metrics["newton_iterations"] = diagnostic(double(result.iterations));
+  output.metrics["newton_iterations"] = diagnostic(double(iterations));
   return output;
+}
+
+LevelOutput run_mattiasson(const Parameters& p, double level) {
+  const auto problem = rotated_clamp_cantilever(p, level);
+  const auto result = sh::solve_static(problem.model, problem.options);
+  const sh::Kinematics kin(problem.model, result.q);
+  return rotated_clamp_tip_metrics(problem, kin.tip_position(), kin.tip_frame(), result.iterations);
 }
 
 // ---- Mattiasson cantilever in 3-D, super-clothoid ------------------------------------------------
 
-// The same problem as run_mattiasson (rotated clamp, all three strains unknown) on the super-clothoid
-// rod: continuous, piecewise-affine strains (ALGORITHMS.md §2), q = nodal strains.
+// The same problem on the super-clothoid rod: continuous, piecewise-affine strains
+// (ALGORITHMS.md §2), q = nodal strains.
 LevelOutput run_clothoid_mattiasson(const Parameters& p, double level) {
-  const double L = parameter_value(p, "L"), EI = parameter_value(p, "EI"), alpha = parameter_value(p, "alpha");
-  const ref::TipLoadedCantilever cantilever{L, EI, alpha * EI / (L * L)};
-  const auto tip = ref::cantilever_tip(cantilever);
-  const Mat3 yaw = Eigen::AngleAxisd(kPi / 6, Vec3::UnitZ()).toRotationMatrix();
-  const Mat3 roll = Eigen::AngleAxisd(40.0 * kPi / 180.0, Vec3::UnitX()).toRotationMatrix();
-  sh::RodModel model;
-  model.elements = element_count(level);
-  model.length = L;
-  model.stiffness = Vec3(0.8 * EI, EI, EI);
-  model.root_frame = yaw * roll;
-  model.end_force = Vec3(0.0, 0.0, -cantilever.P);
-  sh::StaticOptions options;
-  options.load_steps = alpha > 3.0 ? 4 : 2;
-  const auto result = sh::solve_clothoid_static(model, options);
-  const sh::ClothoidKinematics kin(model, result.q, false);
-  const Vec3 t0 = model.root_frame.col(0);
-  const Vec3 r = kin.tip_position() - model.root_position;
-  const Vec3 t = kin.tip_frame().col(0);
-  LevelOutput output;
-  output.metrics["tip_w"] = error_sample(-r.z(), tip.w);
-  output.metrics["tip_u"] = error_sample(L - r.dot(t0), tip.u);
-  output.metrics["tip_phi"] = error_sample(std::atan2(-t.z(), t.dot(t0)), tip.phi_L);
-  output.metrics["out_of_plane"] = value_sample(std::abs(r.dot(Vec3::UnitZ().cross(t0))) / L);
-  output.metrics["newton_iterations"] = diagnostic(double(result.iterations));
-  return output;
+  const auto problem = rotated_clamp_cantilever(p, level);
+  const auto result = sh::solve_clothoid_static(problem.model, problem.options);
+  const sh::ClothoidKinematics kin(problem.model, result.q, false);
+  return rotated_clamp_tip_metrics(problem, kin.tip_position(), kin.tip_frame(), result.iterations);
 }
 
 // ---- heavy cantilever: H(s) ----------------------------------------------------------------------
