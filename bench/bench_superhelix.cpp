@@ -4,13 +4,20 @@
 //    N = 1024).
 //  - BM_StepDense: the same step by dense assembly (O(N^3)) and LDL^T, N = 16 .. 256 (target: the
 //    recursive step at least 20x faster at N = 256).
+//  - BM_StepRecursiveMovingRoot: the recursive step with a translating, spinning-up root (root_motion.hpp).
+//  - BM_ClothoidStepRecursive / BM_ClothoidStepDense: the super-clothoid step by the O(N) nodal-strain
+//    recursion (N = 16 .. 1024) and by dense assembly + LDL^T (N = 16 .. 256).
 //  - BM_Statics: the heavy-cantilever static solve (Newton with a finite-difference Jacobian), N = 8 .. 64.
+// The fit exponent over N = 16 .. 1024 (issue: <= 1.1) is the least-squares slope of log(cpu time)
+// against log N of the BM_StepRecursive rows (e.g. from --benchmark_format=json).
 // The state is a curved, moving rod under gravity (set up outside the timed loop).
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
 
+#include "rodvv/solvers/superhelix/clothoid_dynamics.hpp"
 #include "rodvv/solvers/superhelix/dynamics.hpp"
+#include "rodvv/solvers/superhelix/root_motion.hpp"
 #include "rodvv/solvers/superhelix/statics.hpp"
 
 namespace {
@@ -51,6 +58,35 @@ void step_benchmark(benchmark::State& bench, sh::DynamicsPath path) {
 void BM_StepRecursive(benchmark::State& bench) { step_benchmark(bench, sh::DynamicsPath::Recursive); }
 void BM_StepDense(benchmark::State& bench) { step_benchmark(bench, sh::DynamicsPath::Dense); }
 
+void BM_StepRecursiveMovingRoot(benchmark::State& bench) {
+  const auto n = static_cast<std::size_t>(bench.range(0));
+  const sh::RodModel model = model_of(n);
+  const sh::RootMotion root =
+      sh::uniformly_accelerated_root(model, Vec3(0.3, 0.0, 0.1), Vec3(1.0, 2.0, -0.5), Vec3(0.0, 0.6, 0.8), 2.0, -3.0);
+  sh::DynamicState state = state_of(n);
+  state.time = 0.25;
+  for (auto _ : bench) {
+    const VecX dv = sh::velocity_change(model, state, 1e-3, sh::DynamicsPath::Recursive, root);
+    benchmark::DoNotOptimize(dv.data());
+  }
+  bench.SetComplexityN(bench.range(0));
+}
+
+void clothoid_benchmark(benchmark::State& bench, sh::DynamicsPath path) {
+  const auto n = static_cast<std::size_t>(bench.range(0));
+  const sh::RodModel model = model_of(n);
+  sh::DynamicState state;
+  state.q = VecX::Constant(static_cast<Eigen::Index>(sh::clothoid_dof_count(model)), 0.5);
+  state.qdot = VecX::LinSpaced(state.q.size(), -0.2, 0.3);
+  for (auto _ : bench) {
+    const VecX dv = sh::clothoid_velocity_change(model, state, 1e-3, path);
+    benchmark::DoNotOptimize(dv.data());
+  }
+  bench.SetComplexityN(bench.range(0));
+}
+void BM_ClothoidStepRecursive(benchmark::State& bench) { clothoid_benchmark(bench, sh::DynamicsPath::Recursive); }
+void BM_ClothoidStepDense(benchmark::State& bench) { clothoid_benchmark(bench, sh::DynamicsPath::Dense); }
+
 void BM_Statics(benchmark::State& bench) {
   const auto n = static_cast<std::size_t>(bench.range(0));
   sh::RodModel model = model_of(n);
@@ -69,6 +105,9 @@ void BM_Statics(benchmark::State& bench) {
 
 BENCHMARK(BM_StepRecursive)->RangeMultiplier(2)->Range(16, 1024)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
 BENCHMARK(BM_StepDense)->RangeMultiplier(2)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
+BENCHMARK(BM_StepRecursiveMovingRoot)->RangeMultiplier(4)->Range(16, 1024)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity(benchmark::oN);
+BENCHMARK(BM_ClothoidStepRecursive)->RangeMultiplier(2)->Range(16, 1024)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
+BENCHMARK(BM_ClothoidStepDense)->RangeMultiplier(2)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
 BENCHMARK(BM_Statics)->RangeMultiplier(2)->Range(8, 64)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 
 }  // namespace

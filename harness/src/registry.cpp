@@ -60,6 +60,7 @@ const Registry& default_registry() {
     register_superhelix_cases(r);
     register_buckling_cases(r);
     register_contact_cases(r);
+    register_sleeve_cases(r);
     return r;
   }();
   return registry;

@@ -112,8 +112,9 @@ CantileverModuli solve_cantilever(double alpha) {
   // decreases in beta and behaves like ln(8/beta) - sqrt(alpha) for small beta. A geometric scan
   // (factor 16) first brackets the root in [beta/16, beta], on which TOMS 748 converges quickly
   // (on the whole interval it would bisect for ~150 steps when beta ~ 1e-43, alpha ~ 1e4).
-  // beta_min keeps k'^2 = sin^2(beta/2) a normal number for R_F.
-  constexpr double kBetaMin = 1e-150;
+  // beta_min keeps k'^2 = sin^2(beta/2) ~ 2.5e-201 above the smallest argument GSL's R_D accepts
+  // (5 DBL_MIN^(2/3) ~ 6e-206); with 1e-150, alpha ~ 1e5 ended in a GSL domain error.
+  constexpr double kBetaMin = 1e-100;
   const auto f = [target](double beta) { return scaled_length(moduli_from_beta(beta)) - target; };
   double hi = quarter;
   double f_hi = at_quarter;
@@ -127,8 +128,8 @@ CantileverModuli solve_cantilever(double alpha) {
   }
   if (!(f_lo > 0.0))
     throw InputError("alpha", "invalid parameter 'alpha' = P L^2/EI = " + format_value(alpha) +
-                                  ": too large, the tip rotation is within 1e-150 of pi/2 (must be "
-                                  "<= about 1.2e5)");
+                                  ": too large, the tip rotation is within 1e-100 of pi/2 (must be "
+                                  "<= about 5.4e4)");
   if (f_hi == 0.0) return moduli_from_beta(hi);
   return moduli_from_beta(
       solve_bracketed("cantilever tip rotation (pi/2 - phi_L)", f, lo, hi, f_lo, f_hi));

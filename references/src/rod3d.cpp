@@ -125,4 +125,73 @@ double end_moment_roll_up_invariant(const EndMomentRollUp& rod) {
   return rod.M * rod.M / (2.0 * rod.EI);
 }
 
+namespace {
+void validate(const SpecialCosseratHelix& rod) {
+  require_positive("B", rod.B);
+  require_positive("C", rod.C);
+  require_positive("GA", rod.GA);
+  require_positive("EA", rod.EA);
+  for (int i = 0; i < 3; ++i) require_finite("u", rod.u[i]);
+  for (int i = 0; i < 3; ++i) require_finite("root_position", rod.root_position[i]);
+  // u parallel to n0 (pure twist, including u = 0): a straight twisted rod, any tension is an
+  // equilibrium, the helix axis and lambda are undefined.
+  if (!(rod.u.tail<2>().norm() > 0.0))
+    throw InputError("u", "invalid parameter 'u': must have a bending part (u1, u2) != 0 (otherwise the rod is "
+                          "straight: the helix axis and the force lambda are undefined)");
+  const Mat3& R = rod.root_frame;
+  if (!R.allFinite() || (R.transpose() * R - Mat3::Identity()).norm() > 1e-12 || std::abs(R.determinant() - 1.0) > 1e-12)
+    throw InputError("root_frame", "invalid parameter 'root_frame': must be a rotation (|R^T R - I| <= 1e-12, "
+                                   "|det R - 1| <= 1e-12)");
+}
+}  // namespace
+
+SpecialCosseratHelixSolution special_cosserat_helix(const SpecialCosseratHelix& rod) {
+  validate(rod);
+  const Vec3& u = rod.u;
+  const Vec3 stiffness(rod.C, rod.B, rod.B), compliance(1.0 / rod.EA, 1.0 / rod.GA, 1.0 / rod.GA);
+  // lambda^2 a + lambda + c = 0 with a = u0 (1/EA - 1/GA), c = (B - C) u0; the root -> -c as a -> 0,
+  // lambda = -2 c / (1 + sqrt(1 - 4 a c)) (no cancellation).
+  const double a = u[0] * (1.0 / rod.EA - 1.0 / rod.GA), c = (rod.B - rod.C) * u[0];
+  const double discriminant = 1.0 - 4.0 * a * c;
+  if (!(discriminant >= 0.0))
+    throw InputError("u", "invalid parameter 'u': no real force: 1 - 4 u0^2 (1/EA - 1/GA)(B - C) = " +
+                              format_value(discriminant) + " must be >= 0");
+  SpecialCosseratHelixSolution out;
+  out.lambda = -2.0 * c / (1.0 + std::sqrt(discriminant));
+  out.strain_v = Vec3::UnitX() + out.lambda * compliance.cwiseProduct(u);
+  out.force_body = out.lambda * u;
+  out.moment_body = stiffness.cwiseProduct(u);
+  out.rate = u.norm();
+  const Vec3 axis_body = u / out.rate;
+  out.axis = rod.root_frame * axis_body;
+  out.advance = out.strain_v.dot(axis_body);
+  out.radius = (out.strain_v - out.advance * axis_body).norm() / out.rate;
+  out.axis_point = rod.root_position + rod.root_frame * u.cross(out.strain_v) / (out.rate * out.rate);
+  out.axial_force = out.lambda * out.rate;
+  out.axial_moment = u.dot(out.moment_body) / out.rate;
+  out.bending_energy = 0.5 * u.dot(out.moment_body);
+  const Vec3 shear = out.strain_v - Vec3::UnitX();
+  out.shear_energy = 0.5 * shear.dot(shear.cwiseQuotient(compliance));
+  out.H = out.force_body.dot(out.strain_v) + out.moment_body.dot(u) - out.bending_energy - out.shear_energy;
+  return out;
+}
+
+CosseratHelixPoint special_cosserat_helix_point(const SpecialCosseratHelix& rod, double s) {
+  const SpecialCosseratHelixSolution sol = special_cosserat_helix(rod);
+  require_finite("s", s);
+  const double k = sol.rate, angle = k * s;
+  const Vec3 axis_body = rod.u / k;
+  const Vec3 v_perp = sol.strain_v - sol.advance * axis_body;
+  // int_0^s exp(t [u]x) dt v_perp, with v_perp normal to u: rotation in the plane normal to the axis
+  const Vec3 turn = std::sin(angle) / k * v_perp + 2.0 * std::sin(0.5 * angle) * std::sin(0.5 * angle) / k *
+                                                        axis_body.cross(v_perp);
+  CosseratHelixPoint point;
+  const Mat3 local = Eigen::AngleAxisd(angle, axis_body).toRotationMatrix();
+  point.frame = rod.root_frame * local;
+  point.position = rod.root_position + s * sol.advance * sol.axis + rod.root_frame * turn;
+  point.force = point.frame * sol.force_body;
+  point.moment = point.frame * sol.moment_body;
+  return point;
+}
+
 }  // namespace rodvv::references

@@ -8,6 +8,7 @@
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
 #include "rodvv/solvers/elastica2d/banded_lu.hpp"
+#include "rodvv/solvers/elastica2d/contact_lcp.hpp"
 #include "rodvv/solvers/elastica2d/lagrangian.hpp"
 #include "rodvv/solvers/elastica2d/newton.hpp"
 
@@ -196,6 +197,17 @@ double gap_tolerance(const DiscreteLagrangian& lag, const VectorXd& z) {
 
 void validate(const ContactOptions& options) {
   require_at_least("contact.max_active_set_iterations", options.max_active_set_iterations, 1);
+  if (options.method != ContactMethod::ActiveSet && options.method != ContactMethod::NewtonLcp)
+    throw InputError("contact.method", "invalid parameter 'contact.method': must be ActiveSet or NewtonLcp");
+  if (options.lcp != contact::LcpMethod::Lemke && options.lcp != contact::LcpMethod::ProjectedGaussSeidel)
+    throw InputError("contact.lcp", "invalid parameter 'contact.lcp': must be Lemke or ProjectedGaussSeidel");
+  require_open_interval("contact.lcp_settings.tolerance", options.lcp_settings.tolerance, 0.0, 1.0);
+  require_at_least("contact.lcp_settings.max_iterations", options.lcp_settings.max_iterations, 1);
+  if (!(options.candidate_distance > 0.0))  // +inf allowed (every pair); NaN and <= 0 are not
+    throw InputError("contact.candidate_distance",
+                     "invalid parameter 'contact.candidate_distance' = " + format_value(options.candidate_distance) +
+                         ": must be > 0 (+inf = every pair)");
+  require_non_negative("contact.stabilisation", options.stabilisation);
 }
 
 ContactSolution solve_static_contact(const Problem& problem, const Discretisation& discretisation,
@@ -208,7 +220,10 @@ ContactSolution solve_static_contact(const Problem& problem, const Discretisatio
     validate(obstacles[o], "obstacles[" + std::to_string(o) + "]");
   DiscreteLagrangian lag(problem, discretisation);
   const std::size_t n = lag.elements();
-  const std::string method = detail::method_name(discretisation.scheme) + "-contact";
+  const bool lcp = contact.method == ContactMethod::NewtonLcp;
+  const std::string method =
+      detail::method_name(discretisation.scheme) + "-contact" +
+      (lcp ? (contact.lcp == contact::LcpMethod::Lemke ? "-lcp-lemke" : "-lcp-pgs") : "");
   lag.set_load_factor(1.0 / static_cast<double>(options.load_steps));
   VectorXd z = detail::initial_state(lag, problem, guess);
 
@@ -235,6 +250,15 @@ ContactSolution solve_static_contact(const Problem& problem, const Discretisatio
     from[k] = angle_row ? row.target : z[static_cast<Eigen::Index>(row.dof)];
   }
 
+  // NewtonLcp: every acting (node, obstacle) pair with its force.
+  std::vector<detail::ContactPair> pairs;
+  if (lcp)
+    for (std::size_t i = 0; i <= n; ++i)
+      for (std::size_t o = 0; o < obstacles.size(); ++o)
+        if (acts_on(obstacles[o], node_s(lag, i))) pairs.push_back({i, o});
+  VectorXd pair_force = VectorXd::Zero(static_cast<Eigen::Index>(pairs.size()));
+  detail::LcpNewtonStats lcp_stats;
+
   detail::NewtonState state;
   std::vector<Pair> active;
   std::vector<double> lambda;
@@ -245,6 +269,10 @@ ContactSolution solve_static_contact(const Problem& problem, const Discretisatio
     lag.set_load_factor(load);
     for (std::size_t k = 0; k < rows; ++k)
       lag.set_row_target(k, step == steps ? to[k] : from[k] + load * (to[k] - from[k]));
+    if (lcp) {
+      detail::newton_lcp(lag, obstacles, pairs, z, pair_force, options, contact, state, lcp_stats, method);
+      continue;
+    }
     for (std::size_t sweep = 0;; ++sweep) {
       AugmentedSystem sys(lag, obstacles, active);
       // lambda follows the sorted order of sys.active(); `active` was kept sorted.
@@ -306,7 +334,25 @@ ContactSolution solve_static_contact(const Problem& problem, const Discretisatio
   out.rod.method = method;
   out.rod.iterations = state.iterations;
   out.rod.residual = state.residual;
-  out.active_set_iterations = updates;
+  out.active_set_iterations = lcp ? lcp_stats.set_changes : updates;
+  if (lcp) {
+    // Report the pairs that carry a force or touch their obstacle to round-off, as active pairs.
+    const double touching = gap_tolerance(lag, z);
+    for (std::size_t p = 0; p < pairs.size(); ++p) {
+      const double f = pair_force[static_cast<Eigen::Index>(p)];
+      if (f > 0.0 || gap(obstacles[pairs[p].obstacle], node_position(lag, z, pairs[p].node)) <= touching) {
+        active.push_back({pairs[p].node, pairs[p].obstacle});
+        lambda.push_back(f);
+      }
+    }
+    out.lcp_solves = lcp_stats.solves;
+    out.lcp_iterations = lcp_stats.iterations;
+    out.lcp_max_iterations = lcp_stats.max_iterations;
+    out.lcp_candidates = lcp_stats.candidates;
+    out.lcp_residual = lcp_stats.residual;
+    out.lcp_fischer_burmeister = lcp_stats.fischer_burmeister;
+    out.lcp_scale = lcp_stats.scale;
+  }
   out.contact_force_x.assign(n + 1, 0.0);
   out.contact_force_y.assign(n + 1, 0.0);
   out.min_gap.assign(n + 1, std::numeric_limits<double>::infinity());
@@ -326,6 +372,16 @@ ContactSolution solve_static_contact(const Problem& problem, const Discretisatio
     out.contact_force_y[c.node] += c.force * c.direction.y();
     out.contacts.push_back(c);
   }
+  // |min(lambda, g)| over every acting pair (lambda = 0 off the contacts).
+  for (std::size_t i = 0; i <= n; ++i)
+    for (std::size_t o = 0; o < obstacles.size(); ++o) {
+      if (!acts_on(obstacles[o], node_s(lag, i))) continue;
+      const auto it = std::lower_bound(active.begin(), active.end(), Pair{i, o});
+      const double f = it != active.end() && *it == Pair{i, o}
+                           ? lambda[static_cast<std::size_t>(it - active.begin())] : 0.0;
+      out.complementarity_residual = std::max(
+          out.complementarity_residual, std::abs(std::min(f, gap(obstacles[o], node_position(lag, z, i)))));
+    }
   return out;
 }
 

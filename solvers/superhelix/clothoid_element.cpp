@@ -144,4 +144,96 @@ ClothoidJacobian clothoid_element_jacobian(const Vec3& a, const Vec3& b, double 
   return out;
 }
 
+namespace {
+
+// Quantities expanded to second order in a scalar e along a direction: X(e) = X0 + e X1 + e^2 X2.
+struct Taylor2 {
+  Mat3 m0, m1, m2;
+};
+
+Taylor2 multiply(const Taylor2& p, const Taylor2& q) {
+  return {p.m0 * q.m0, p.m1 * q.m0 + p.m0 * q.m1, p.m2 * q.m0 + p.m1 * q.m1 + p.m0 * q.m2};
+}
+
+struct PoseRates {
+  Taylor2 R;
+  Vec3 r0, r1, r2;
+};
+
+// One sub-interval of length h from the identity, with strain (a + e adot) + s (b + e bdot): the
+// series recurrence of series_piece carried to second order in e (products of first-order strain
+// matrices with the second-order running terms). Stops when the value part and the two rate parts
+// (relative to their running sums) stay below the tolerance for two consecutive terms.
+PoseRates series_piece_rates(const Vec3& a, const Vec3& b, const Vec3& adot, const Vec3& bdot, double h,
+                             double tolerance) {
+  const Mat3 Xa0 = skew(a) * h, Xa1 = skew(adot) * h, Xb0 = skew(b) * (h * h), Xb1 = skew(bdot) * (h * h);
+  const Vec3 e0 = Vec3::UnitX();
+  Taylor2 previous{Mat3::Zero(), Mat3::Zero(), Mat3::Zero()};
+  Taylor2 current{Mat3::Identity(), Mat3::Zero(), Mat3::Zero()};
+  PoseRates pose{current, h * e0, Vec3::Zero(), Vec3::Zero()};
+  int small_terms = 0;
+  constexpr std::size_t kMaxTerms = 200;
+  std::size_t k = 0;
+  for (; k < kMaxTerms; ++k) {
+    const double inv = 1.0 / static_cast<double>(k + 1);
+    Taylor2 next;
+    next.m0 = (current.m0 * Xa0 + previous.m0 * Xb0) * inv;
+    next.m1 = (current.m1 * Xa0 + current.m0 * Xa1 + previous.m1 * Xb0 + previous.m0 * Xb1) * inv;
+    next.m2 = (current.m2 * Xa0 + current.m1 * Xa1 + previous.m2 * Xb0 + previous.m1 * Xb1) * inv;
+    pose.R.m0 += next.m0;
+    pose.R.m1 += next.m1;
+    pose.R.m2 += next.m2;
+    const double weight = h / static_cast<double>(k + 2);
+    pose.r0 += weight * next.m0.col(0);
+    pose.r1 += weight * next.m1.col(0);
+    pose.r2 += weight * next.m2.col(0);
+    previous = current;
+    current = next;
+    const bool small = next.m0.cwiseAbs().maxCoeff() < tolerance &&
+                       next.m1.cwiseAbs().maxCoeff() < tolerance * std::max(1.0, pose.R.m1.cwiseAbs().maxCoeff()) &&
+                       next.m2.cwiseAbs().maxCoeff() < tolerance * std::max(1.0, pose.R.m2.cwiseAbs().maxCoeff());
+    small_terms = small ? small_terms + 1 : 0;
+    if (small_terms >= 2) break;
+  }
+  if (k == kMaxTerms)
+    throw SolverError("super-clothoid rate series", "no convergence in " + std::to_string(kMaxTerms) + " terms", k,
+                      current.m0.cwiseAbs().maxCoeff());
+  return pose;
+}
+
+Vec3 axial(const Mat3& W) { return 0.5 * Vec3(W(2, 1) - W(1, 2), W(0, 2) - W(2, 0), W(1, 0) - W(0, 1)); }
+
+}  // namespace
+
+ClothoidRates clothoid_element_rates(const Vec3& a, const Vec3& b, const Vec3& adot, const Vec3& bdot, double ell,
+                                     double tolerance) {
+  validate_element(a, b, ell, tolerance);
+  for (int i = 0; i < 3; ++i) {
+    require_finite("adot", adot[i]);
+    require_finite("bdot", bdot[i]);
+  }
+  const std::size_t pieces = piece_count(a, b, ell);
+  const double h = ell / static_cast<double>(pieces);
+  PoseRates pose{{Mat3::Identity(), Mat3::Zero(), Mat3::Zero()}, Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+  for (std::size_t j = 0; j < pieces; ++j) {
+    const double s = static_cast<double>(j) * h;
+    const PoseRates piece = series_piece_rates(a + s * b, b, adot + s * bdot, bdot, h, tolerance);
+    // (R, r) <- (R Rp, r + R rp), to second order in e.
+    pose.r2 += pose.R.m0 * piece.r2 + pose.R.m1 * piece.r1 + pose.R.m2 * piece.r0;
+    pose.r1 += pose.R.m0 * piece.r1 + pose.R.m1 * piece.r0;
+    pose.r0 += pose.R.m0 * piece.r0;
+    pose.R = multiply(pose.R, piece.R);
+  }
+  ClothoidRates out;
+  out.R = pose.R.m0;
+  out.r = pose.r0;
+  // e = t: dR/dt = R1, d2R/dt2 = 2 R2; dR/dt R^T = [omega]x, and d/dt [omega]x = skew part of
+  // (d2R/dt2) R^T (the other term, dR/dt dR/dt^T, is symmetric).
+  out.angular_velocity = axial(pose.R.m1 * out.R.transpose());
+  out.angular_bias = axial(2.0 * pose.R.m2 * out.R.transpose());
+  out.velocity = pose.r1;
+  out.bias = 2.0 * pose.r2;
+  return out;
+}
+
 }  // namespace rodvv::solvers::superhelix

@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 
 #include <cmath>
 #include <limits>
@@ -19,6 +20,7 @@ namespace {
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 using Mat63 = Eigen::Matrix<double, 6, 3>;
+using Mat36 = Eigen::Matrix<double, 3, 6>;
 
 void check_state(const RodModel& model, const DynamicState& state, double h) {
   validate(model);
@@ -31,11 +33,51 @@ void check_state(const RodModel& model, const DynamicState& state, double h) {
   if (!state.qdot.allFinite()) throw InputError("state.qdot", "invalid parameter 'state.qdot': must be finite");
 }
 
-// X(r): motion at p -> motion at p + r (ALGORITHMS.md §1.6).
-Mat6 motion_transform(const Vec3& r) {
-  Mat6 x = Mat6::Identity();
-  x.block<3, 3>(3, 0) = -skew(r);
-  return x;
+// Root-to-tip pass (O(N), dynamics.hpp): for every element its base frame R_e and end maps, and for
+// every Gauss point its local maps (offset, Jacobian in the base frame of its element) and its bias
+// acceleration zeta_g, also in that base frame (world zeta = R_e zeta_local): the base rates are
+// rotated into the element frame once per element, so the per-point work is frame-free.
+// on_point(e, g, R_e, local, zeta_local); on_element(e, R_e, r_e = p_{e+1} - p_e, Theta_e, T_e) after
+// its points (world).
+template <class OnPoint, class OnElement>
+void rate_pass(const RodModel& model, const VecX& q, const VecX& qdot, const RootState& root,
+               const std::vector<double>& nodes, OnPoint&& on_point, OnElement&& on_element) {
+  const double ell = element_length(model);
+  Mat3 R = root.frame;
+  Vec3 omega = root.angular_velocity, alpha = root.angular_acceleration, acc = root.acceleration;
+  for (std::size_t e = 0; e < model.elements; ++e) {
+    const Vec3 qe = q.segment<3>(3 * e), rate = qdot.segment<3>(3 * e);
+    const Vec3 omega_l = R.transpose() * omega, alpha_l = R.transpose() * alpha, acc_l = R.transpose() * acc;
+    for (std::size_t g = 0; g < nodes.size(); ++g) {
+      const ElementRates local = element_point_rates(qe, rate, 0.5 * ell * (1.0 + nodes[g]));
+      const Vec3 zeta = acc_l + alpha_l.cross(local.offset) +
+                        omega_l.cross(omega_l.cross(local.offset) + 2.0 * local.velocity) + local.bias;
+      on_point(e, g, R, local, zeta);
+    }
+    const ElementEndRates end = element_end_rates(qe, rate, ell);
+    const Vec3 r = R * end.point.offset;
+    on_element(e, R, r, Mat3(R * end.G), Mat3(R * end.point.jacobian));
+    const Vec3 acc_end = acc_l + alpha_l.cross(end.point.offset) +
+                         omega_l.cross(omega_l.cross(end.point.offset) + 2.0 * end.point.velocity) + end.point.bias;
+    acc = R * acc_end;
+    alpha = R * (alpha_l + omega_l.cross(end.angular_velocity) + end.angular_bias);
+    omega = R * (omega_l + end.angular_velocity);
+    R = R * end.E;
+  }
+}
+
+RootState fixed_root(const RodModel& model) {
+  RootState root;
+  root.position = model.root_position;
+  root.frame = model.root_frame;
+  return root;
+}
+
+RodModel model_with_root(const RodModel& model, const RootState& root) {
+  RodModel moved = model;
+  moved.root_position = root.position;
+  moved.root_frame = root.frame;
+  return moved;
 }
 
 // Right-hand side shared by both paths: h (-K (q - q0)) - D qdot, without the point / tip loads.
@@ -45,9 +87,10 @@ VecX elastic_rhs(const RodModel& model, const DynamicState& state, double h, Vec
   return -h * k.cwiseProduct(state.q - natural_strain_vector(model)) - damping_diagonal.cwiseProduct(state.qdot);
 }
 
-VecX dense_velocity_change(const RodModel& model, const DynamicState& state, double h) {
+VecX dense_velocity_change(const RodModel& model_in, const DynamicState& state, double h, const RootState& root) {
+  const RodModel model = model_with_root(model_in, root);
   const Kinematics kinematics(model, state.q);
-  const auto zeta = bias_accelerations(model, kinematics, state.qdot);
+  const auto zeta = bias_accelerations(model, kinematics, state.qdot, root);
   const auto n = static_cast<Eigen::Index>(dof_count(model));
   MatX M = MatX::Zero(n, n);
   VecX loads = VecX::Zero(n);
@@ -72,72 +115,136 @@ VecX dense_velocity_change(const RodModel& model, const DynamicState& state, dou
   return ldlt.solve(rhs);
 }
 
-VecX recursive_velocity_change(const RodModel& model, const DynamicState& state, double h) {
-  const Kinematics kinematics(model, state.q);
-  const auto zeta = bias_accelerations(model, kinematics, state.qdot);
+// Per-element data of the articulated-body recursion (ALGORITHMS.md §1.6), filled by the root-to-tip
+// rate pass, used by the two later passes. I_el = sum_g I_p(d_g) is kept as its three 3 x 3 parts
+// (mass, first moment h = sum m d, rotational part -sum m [d]x^2).
+struct ElementBlock {
+  Mat3 theta, translation;  // S_Q = [Theta; T]
+  Vec3 r;                   // p_{Q+1} - p_Q
+  double mass;
+  Vec3 first_moment;
+  Mat3 rotational;
+  Mat63 coupling;  // U_pt = sum m [[d]x T; T], then U_Q
+  Mat3 tt;         // sum m T^T T
+  Vec6 point_bias;  // sum_g [d x beta; beta]
+  Vec3 t_beta;     // sum_g T^T beta
+  Mat3 h_inverse;  // H_Q^-1
+  Vec3 joint_rhs;  // u_Q
+};
+
+// X(r)^T A X(r) for symmetric A = [[A11, A12], [A21, A22]], X(r) = [[I, 0], [-[r]x, I]]:
+//   A21' = A21 - A22 [r]x,  A11' = A11 - A12 [r]x + [r]x A21',  A12' = A21'^T,  A22' = A22.
+Mat6 shift_inertia(const Mat6& A, const Vec3& r) {
+  const Mat3 Rx = skew(r);
+  Mat6 out;
+  const Mat3 a21 = A.block<3, 3>(3, 0) - A.block<3, 3>(3, 3) * Rx;
+  out.block<3, 3>(0, 0) = A.block<3, 3>(0, 0) - A.block<3, 3>(0, 3) * Rx + Rx * a21;
+  out.block<3, 3>(3, 0) = a21;
+  out.block<3, 3>(0, 3) = a21.transpose();
+  out.block<3, 3>(3, 3) = A.block<3, 3>(3, 3);
+  return out;
+}
+
+VecX recursive_velocity_change(const RodModel& model, const DynamicState& state, double h, const RootState& root) {
   VecX damping;
   const VecX b = elastic_rhs(model, state, h, damping);
-  const std::size_t n = model.elements, per = kinematics.points_per_element();
-  const auto& points = kinematics.points();
+  const std::size_t n = model.elements;
+  std::vector<double> nodes, weights;
+  gauss_legendre(model.gauss_points, nodes, weights);
+  const double ell = element_length(model);
+  thread_local std::vector<ElementBlock> blocks;  // reused: no allocation per step once grown
+  blocks.resize(n);
 
-  std::vector<Mat3> h_inverse(n);
-  std::vector<Mat63> coupling(n);  // U_Q
-  std::vector<Vec3> joint_rhs(n);  // u_Q
+  // Pass 1 (root to tip): kinematics, bias accelerations and the element sums, accumulated in the
+  // element's base frame (c, J local) and rotated once: [R c]x R J = R [c]x J, -[R c]x^2 = R (|c|^2 I - c c^T) R^T.
+  Mat3 rotational = Mat3::Zero(), cross_j = Mat3::Zero(), sum_j = Mat3::Zero();
+  Vec3 first_moment = Vec3::Zero(), moment = Vec3::Zero(), force = Vec3::Zero(), gravity_local = Vec3::Zero();
+  rate_pass(
+      model, state.q, state.qdot, root, nodes,
+      [&](std::size_t e, std::size_t g, const Mat3& R, const ElementRates& local, const Vec3& zeta) {
+        ElementBlock& block = blocks[e];
+        if (g == 0) {
+          block.mass = 0.0;
+          block.tt.setZero();
+          block.t_beta.setZero();
+          rotational.setZero();
+          cross_j.setZero();
+          sum_j.setZero();
+          first_moment.setZero();
+          moment.setZero();
+          force.setZero();
+          gravity_local = R.transpose() * model.gravity;
+        }
+        const double m = model.line_density * 0.5 * ell * weights[g];
+        const Vec3& c = local.offset;
+        const Mat3& J = local.jacobian;
+        block.mass += m;
+        first_moment += m * c;
+        rotational.noalias() -= m * c * c.transpose();
+        rotational.diagonal().array() += m * c.squaredNorm();
+        for (int j = 0; j < 3; ++j) cross_j.col(j) += m * c.cross(J.col(j));
+        sum_j += m * J;
+        block.tt.noalias() += m * J.transpose() * J;
+        const Vec3 beta = h * m * (zeta - gravity_local);
+        moment += c.cross(beta);
+        force += beta;
+        block.t_beta.noalias() += J.transpose() * beta;
+      },
+      [&](std::size_t e, const Mat3& R, const Vec3& r, const Mat3& theta, const Mat3& T) {
+        ElementBlock& block = blocks[e];
+        block.r = r;
+        block.theta = theta;
+        block.translation = T;
+        block.first_moment = R * first_moment;
+        block.rotational = R * rotational * R.transpose();
+        block.coupling.topRows<3>() = R * cross_j;
+        block.coupling.bottomRows<3>() = R * sum_j;
+        block.point_bias.head<3>() = R * moment;
+        block.point_bias.tail<3>() = R * force;
+      });
+
+  // Pass 2 (tip to root): articulated inertias I^A and bias wrenches c (ALGORITHMS.md §1.6).
   Mat6 articulated = Mat6::Zero();  // I^A_{Q+1}
   Vec6 bias;                        // c_{Q+1}: the tip wrench enters with a minus sign (beta = -f)
   bias << -h * model.end_moment, -h * model.end_force;
-
   for (std::size_t e = n; e-- > 0;) {
+    ElementBlock& block = blocks[e];
     Mat63 S;
-    S.topRows<3>() = kinematics.end_rotation_jacobian(e);
-    S.bottomRows<3>() = kinematics.end_translation_jacobian(e);
-    const Mat6 X = motion_transform(kinematics.base_position(e + 1) - kinematics.base_position(e));
-
-    Mat6 inertia = Mat6::Zero();  // I_el
-    Mat63 u_points = Mat63::Zero();
-    Mat3 tt = Mat3::Zero();
-    Vec6 point_bias = Vec6::Zero();
-    Vec3 t_beta = Vec3::Zero();
-    for (std::size_t g = 0; g < per; ++g) {
-      const std::size_t index = e * per + g;
-      const GaussPoint& point = points[index];
-      const Mat3 D = skew(point.offset);
-      const double m = point.mass;
-      inertia.block<3, 3>(0, 0) -= m * D * D;
-      inertia.block<3, 3>(0, 3) += m * D;
-      inertia.block<3, 3>(3, 0) -= m * D;
-      inertia.block<3, 3>(3, 3) += m * Mat3::Identity();
-      u_points.topRows<3>() += m * D * point.local_jacobian;
-      u_points.bottomRows<3>() += m * point.local_jacobian;
-      tt += m * point.local_jacobian.transpose() * point.local_jacobian;
-      const Vec3 beta = h * m * (zeta[index] - model.gravity);
-      point_bias.head<3>() += point.offset.cross(beta);
-      point_bias.tail<3>() += beta;
-      t_beta += point.local_jacobian.transpose() * beta;
-    }
+    S.topRows<3>() = block.theta;
+    S.bottomRows<3>() = block.translation;
     const Mat63 IS = articulated * S;
-    Mat3 H = tt + S.transpose() * IS;
+    Mat3 H = block.tt + S.transpose() * IS;
     H.diagonal() += damping.segment<3>(3 * e);
-    const Mat63 U = u_points + X.transpose() * IS;
-    const Vec3 u = b.segment<3>(3 * e) - S.transpose() * bias - t_beta;
+    // U = U_pt + X^T I^A S, with X^T (n; f) = (n + r x f; f)
+    Mat63 U = block.coupling + IS;
+    for (int j = 0; j < 3; ++j) U.col(j).head<3>() += block.r.cross(IS.col(j).tail<3>());
+    const Vec3 u = b.segment<3>(3 * e) - S.transpose() * bias - block.t_beta;
     const Mat3 Hinv = H.inverse();
-    articulated = inertia + X.transpose() * articulated * X - U * Hinv * U.transpose();
-    bias = X.transpose() * bias + point_bias + U * (Hinv * u);
-    h_inverse[e] = Hinv;
-    coupling[e] = U;
-    joint_rhs[e] = u;
+    const Mat36 HinvUt = Hinv * U.transpose();
+    articulated = shift_inertia(articulated, block.r);
+    articulated.block<3, 3>(0, 0) += block.rotational;
+    articulated.block<3, 3>(0, 3) += skew(block.first_moment);
+    articulated.block<3, 3>(3, 0) -= skew(block.first_moment);
+    articulated.block<3, 3>(3, 3).diagonal().array() += block.mass;
+    articulated.noalias() -= U * HinvUt;
+    bias.head<3>() += block.r.cross(bias.tail<3>());
+    bias += block.point_bias + U * (Hinv * u);
+    block.h_inverse = Hinv;
+    block.coupling = U;
+    block.joint_rhs = u;
   }
 
+  // Pass 3 (root to tip): joint accelerations from A_0 = 0 (the root's motion is inside zeta).
   VecX dv(3 * n);
-  Vec6 acceleration = Vec6::Zero();  // clamped root at rest
+  Vec3 angular = Vec3::Zero(), linear = Vec3::Zero();
   for (std::size_t e = 0; e < n; ++e) {
-    const Vec3 x = h_inverse[e] * (joint_rhs[e] - coupling[e].transpose() * acceleration);
+    const ElementBlock& block = blocks[e];
+    const Vec3 x = block.h_inverse * (block.joint_rhs - block.coupling.topRows<3>().transpose() * angular -
+                                      block.coupling.bottomRows<3>().transpose() * linear);
     dv.segment<3>(3 * e) = x;
-    Mat63 S;
-    S.topRows<3>() = kinematics.end_rotation_jacobian(e);
-    S.bottomRows<3>() = kinematics.end_translation_jacobian(e);
-    acceleration = motion_transform(kinematics.base_position(e + 1) - kinematics.base_position(e)) * acceleration +
-                   S * x;
+    // A_{Q+1} = X(r) A_Q + S x, X(r) (alpha; a) = (alpha; a + alpha x r)
+    linear += angular.cross(block.r) + block.translation * x;
+    angular += block.theta * x;
   }
   return dv;
 }
@@ -145,13 +252,21 @@ VecX recursive_velocity_change(const RodModel& model, const DynamicState& state,
 }  // namespace
 
 std::vector<Vec3> bias_accelerations(const RodModel& model, const Kinematics& kinematics, const VecX& qdot) {
-  const double rate = qdot.lpNorm<Eigen::Infinity>();
+  return bias_accelerations(model, kinematics, qdot, fixed_root(model));
+}
+
+std::vector<Vec3> bias_accelerations(const RodModel& model, const Kinematics& kinematics, const VecX& qdot,
+                                     const RootState& root) {
+  std::vector<double> nodes, weights;
+  gauss_legendre(model.gauss_points, nodes, weights);
+  const std::size_t per = nodes.size();
   std::vector<Vec3> zeta(kinematics.points().size(), Vec3::Zero());
-  if (rate == 0.0) return zeta;
-  const double e = std::cbrt(std::numeric_limits<double>::epsilon()) / (model.length * rate);
-  const Kinematics plus(model, kinematics.q() + e * qdot), minus(model, kinematics.q() - e * qdot);
-  const auto v_plus = plus.point_velocities(qdot), v_minus = minus.point_velocities(qdot);
-  for (std::size_t g = 0; g < zeta.size(); ++g) zeta[g] = (v_plus[g] - v_minus[g]) / (2.0 * e);
+  rate_pass(
+      model, kinematics.q(), qdot, root, nodes,
+      [&](std::size_t e, std::size_t g, const Mat3& R, const ElementRates&, const Vec3& z) {
+        zeta[e * per + g] = R * z;
+      },
+      [](std::size_t, const Mat3&, const Vec3&, const Mat3&, const Mat3&) {});
   return zeta;
 }
 
@@ -167,14 +282,26 @@ MatX mass_matrix(const Kinematics& kinematics) {
 }
 
 VecX velocity_change(const RodModel& model, const DynamicState& state, double h, DynamicsPath path) {
+  return velocity_change(model, state, h, path, RootMotion{});
+}
+
+VecX velocity_change(const RodModel& model, const DynamicState& state, double h, DynamicsPath path,
+                     const RootMotion& root_motion) {
   check_state(model, state, h);
-  return path == DynamicsPath::Dense ? dense_velocity_change(model, state, h)
-                                     : recursive_velocity_change(model, state, h);
+  require_finite("state.time", state.time);
+  const RootState root = root_motion.state_at(model, state.time);
+  return path == DynamicsPath::Dense ? dense_velocity_change(model, state, h, root)
+                                     : recursive_velocity_change(model, state, h, root);
 }
 
 DynamicState step(const RodModel& model, const DynamicState& state, double h, DynamicsPath path) {
+  return step(model, state, h, path, RootMotion{});
+}
+
+DynamicState step(const RodModel& model, const DynamicState& state, double h, DynamicsPath path,
+                  const RootMotion& root) {
   DynamicState next;
-  next.qdot = state.qdot + velocity_change(model, state, h, path);
+  next.qdot = state.qdot + velocity_change(model, state, h, path, root);
   next.q = state.q + h * next.qdot;
   next.time = state.time + h;
   return next;

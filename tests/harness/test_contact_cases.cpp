@@ -3,6 +3,7 @@
 // contact force that is off by the (point-contact) discretisation error x 4.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -32,8 +33,8 @@ INSTANTIATE_TEST_SUITE_P(AllContactCases, ContactCase,
                            return rodvv::testing::test_name_of_case(param_info.param);
                          });
 
-TEST(ContactCases, AllNineAreRegistered) {
-  EXPECT_EQ(rodvv::testing::case_names_of_family("elastica-contact").size(), 9u);
+TEST(ContactCases, AllTenAreRegistered) {
+  EXPECT_EQ(rodvv::testing::case_names_of_family("elastica-contact").size(), 10u);
 }
 
 // The solver runs with the wall at 0.101 while the reference keeps 0.1: P moves by ~0.3, far above
@@ -83,6 +84,25 @@ TEST(ContactGatesHaveTeeth, SoftWallAgainstTheHardWallValueFails) {
     auto& P = out.metrics.at("P_vs_table");
     P.reference = out.metrics.at("P_vs_hard").reference;
     P.error = std::abs(P.computed - *P.reference);
+    return out;
+  };
+  const auto result = run_sweep(wrong, wrong.info.parameters, wrong.info.resolution.default_levels);
+  EXPECT_FALSE(result.passed());
+}
+
+// The NewtonLcp variant with its wall 1e-6 further out (its references follow the wall, so only
+// the agreement gate can see it): P moves by ~3e-4 against the active-set P at wall_gap = 0.1,
+// far above the 7e-7 agreement bound.
+TEST(ContactGatesHaveTeeth, AMicronWallShiftFailsTheLcpAgreementGate) {
+  Case wrong = named_case("elastica-contact/cavity-point/polygon-lcp");
+  const auto lcp = wrong.run_level;
+  const auto active = named_case("elastica-contact/cavity-point/polygon").run_level;
+  wrong.run_level = [lcp, active](const Parameters& p, double level) {
+    Parameters moved = p;
+    set_parameter(moved, "wall_gap", 0.1 + 1e-6);
+    LevelOutput out = lcp(moved, level);
+    const double d = std::abs(out.metrics.at("P").computed - active(p, level).metrics.at("P").computed);
+    out.metrics["P_vs_active_set"] = {d, 0.0, d};
     return out;
   };
   const auto result = run_sweep(wrong, wrong.info.parameters, wrong.info.resolution.default_levels);

@@ -3,11 +3,18 @@
 // exact case under a perturbed solver, and a conservation gate on a rod whose H is not constant.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "case_test_support.hpp"
+#include "rodvv/common/errors.hpp"
 #include "rodvv/invariants/noether3d.hpp"
+#include "rodvv/solvers/superhelix/clothoid_kinematics.hpp"
+#include "rodvv/solvers/superhelix/clothoid_solution.hpp"
+#include "rodvv/solvers/superhelix/clothoid_statics.hpp"
 #include "rodvv/solvers/superhelix/solution.hpp"
+#include "rodvv/testing/tolerance.hpp"
 #include "rodvv/solvers/superhelix/statics.hpp"
 
 namespace {
@@ -33,7 +40,7 @@ INSTANTIATE_TEST_SUITE_P(AllSuperHelixCases, SuperHelixCase,
                          });
 
 TEST(SuperHelixCatalogue, HasEveryCase) {
-  EXPECT_EQ(rodvv::testing::case_names_of_family("superhelix").size(), 8u);
+  EXPECT_EQ(rodvv::testing::case_names_of_family("superhelix").size(), 9u);
 }
 
 TEST(SuperHelixGatesHaveTeeth, SecondOrderClaimedAsFourthFails) {
@@ -116,6 +123,142 @@ TEST(SuperHelixGatesHaveTeeth, GravityPotentialMustEnterH) {
   const double without_v = rodvv::invariants::noether3d_summary(solution).spread;
   EXPECT_LT(with_v, 1e-2);
   EXPECT_GT(without_v, 100.0 * with_v);
+}
+
+// ---- the super-clothoid solution struct (solvers/superhelix/clothoid_solution) -------------------
+
+namespace sh = rodvv::solvers::superhelix;
+
+// The heavy cantilever of superhelix/clothoid-heavy-cantilever at its defaults (L = EI = 1, weight 3).
+sh::RodModel heavy_model(std::size_t elements) {
+  sh::RodModel model;
+  model.elements = elements;
+  model.stiffness = rodvv::Vec3(0.6, 1.0, 1.4);
+  model.natural_strain = rodvv::Vec3(0.8, 1.2, -0.5);
+  model.root_frame = Eigen::AngleAxisd(0.4, rodvv::Vec3(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
+  model.gravity = rodvv::Vec3(0.0, 0.0, -3.0);
+  return model;
+}
+
+double relative_spread(const rodvv::SpatialRodSolution& solution) {
+  const auto summary = rodvv::invariants::noether3d_summary(solution);
+  return summary.spread / summary.scale;
+}
+
+TEST(ClothoidSolution, FieldsAreTheConfigurationsFields) {
+  const sh::RodModel model = heavy_model(4);
+  const rodvv::VecX q = sh::solve_clothoid_static(model).q;
+  const sh::ClothoidKinematics kinematics(model, q, false);
+  const auto solution = sh::make_clothoid_solution(model, q);
+  ASSERT_EQ(solution.stations(), 8u);  // 2 Gauss points per element
+  ASSERT_EQ(solution.vertex_s.size(), 5u);
+  const double ell = 0.25;
+  for (std::size_t i = 0; i < solution.stations(); ++i) {
+    const std::size_t e = i / 2;
+    const double sigma = solution.s[i] - static_cast<double>(e) * ell;
+    // pose and strain: the same series and interpolation as the kinematics (a few eps per element)
+    EXPECT_LE((solution.position[i] - kinematics.position(e, sigma)).norm(), 64 * rodvv::testing::kEpsilon) << i;
+    EXPECT_LE((solution.frame[i] - kinematics.frame(e, sigma)).norm(), 64 * rodvv::testing::kEpsilon) << i;
+    EXPECT_LE((solution.strain_u[i] - kinematics.strain(e, sigma)).norm(), 16 * rodvv::testing::kEpsilon) << i;
+    // n(s) = rho S g (L - s) (dead loads, no end force): the force balance n' + f = 0
+    EXPECT_LE((solution.force_n[i] - (1.0 - solution.s[i]) * model.gravity).norm(), 8 * rodvv::testing::kEpsilon) << i;
+  }
+  for (std::size_t j = 0; j <= 4; ++j)
+    EXPECT_EQ(solution.vertex_position[j], kinematics.base_position(j));
+  const auto nodes = sh::make_clothoid_solution(model, q, sh::ClothoidStations::Nodes);
+  ASSERT_EQ(nodes.stations(), 5u);
+  EXPECT_LE((nodes.position.back() - kinematics.tip_position()).norm(), 64 * rodvv::testing::kEpsilon);
+  EXPECT_LE((nodes.strain_u.back() - q.tail<3>()).norm(), 16 * rodvv::testing::kEpsilon);
+  EXPECT_EQ(sh::make_clothoid_solution(model, q, sh::ClothoidStations::Midpoints).stations(), 4u);
+}
+
+TEST(ClothoidSolution, HeavyCantileverHFormsAgreeAndHIsConstantToTheSchemesOrder) {
+  // Measured relative spreads at N = 2, 4, 8 (nodes): 2.16e-2, 3.99e-3, 1.05e-3 (least-squares order
+  // 2.18; 1.97 asymptotically, N = 32 .. 64); Gauss stations 9.42e-3, 9.88e-4, 2.79e-4 (-> 3).
+  std::vector<double> log_h, log_spread;
+  for (std::size_t n : {2u, 4u, 8u}) {
+    const sh::RodModel model = heavy_model(n);
+    const rodvv::VecX q = sh::solve_clothoid_static(model).q;
+    const auto nodes = sh::make_clothoid_solution(model, q, sh::ClothoidStations::Nodes);
+    const auto gauss = sh::make_clothoid_solution(model, q);
+    for (const auto* solution : {&nodes, &gauss}) {
+      const auto summary = rodvv::invariants::noether3d_summary(*solution);
+      // ~10 O(scale) terms per H: 64 eps of the term scale (measured <= 6e-16 relative)
+      EXPECT_LE(summary.form_difference, 64 * rodvv::testing::kEpsilon * summary.scale) << n;
+    }
+    const double spread = relative_spread(nodes);
+    EXPECT_LT(relative_spread(gauss), 0.5 * spread) << n;  // the superconvergent stations
+    log_h.push_back(std::log(1.0 / static_cast<double>(n)));
+    log_spread.push_back(std::log(spread));
+  }
+  // least-squares slope of log spread vs log h: second order, window [p - 0.1, p + 0.5]
+  double mx = 0, my = 0;
+  for (std::size_t i = 0; i < 3; ++i) mx += log_h[i] / 3, my += log_spread[i] / 3;
+  double sxy = 0, sxx = 0;
+  for (std::size_t i = 0; i < 3; ++i) sxy += (log_h[i] - mx) * (log_spread[i] - my), sxx += (log_h[i] - mx) * (log_h[i] - mx);
+  const double order = sxy / sxx;
+  EXPECT_GE(order, 1.9);
+  EXPECT_LE(order, 2.5);
+}
+
+TEST(ClothoidSolution, PerturbedStrainMakesTheHSpreadJump) {
+  // One nodal strain changed by 1e-2 (|q| ~ 1.5) is no equilibrium: H jumps by ~m.du at the two
+  // elements that share the node, well above the O(h^3) spread of the equilibrium at the Gauss
+  // stations (2.8e-4 at N = 8). A change below the discretisation spread (1e-6) cannot be seen by an
+  // invariant that is conserved only to the scheme's order; the exact helix is the round-off check.
+  const sh::RodModel model = heavy_model(8);
+  rodvv::VecX q = sh::solve_clothoid_static(model).q;
+  const double equilibrium = relative_spread(sh::make_clothoid_solution(model, q));
+  q[3 * 4 + 1] += 1e-2;
+  const double perturbed = relative_spread(sh::make_clothoid_solution(model, q));
+  EXPECT_GT(perturbed, 4.0 * equilibrium) << equilibrium << " -> " << perturbed;  // measured 2.8e-4 -> 2.4e-3 (8.6x)
+}
+
+TEST(ClothoidSolution, BadInputNamesTheParameter) {
+  const sh::RodModel model = heavy_model(4);
+  try {
+    sh::make_clothoid_solution(model, rodvv::VecX::Zero(12));
+    ADD_FAILURE() << "no InputError";
+  } catch (const rodvv::InputError& e) {
+    EXPECT_EQ(e.parameter(), "q");
+  }
+  sh::RodModel per_element = model;
+  per_element.natural_strain_per_element.assign(4, rodvv::Vec3::Zero());
+  try {
+    sh::make_clothoid_solution(per_element, rodvv::VecX::Zero(15));
+    ADD_FAILURE() << "no InputError";
+  } catch (const rodvv::InputError& e) {
+    EXPECT_EQ(e.parameter(), "natural_strain_per_element");
+  }
+}
+
+TEST(SuperHelixGatesHaveTeeth, ClothoidHeavyCantileverWrongClaimsFail) {
+  // The tip converges at order 4 and H at the nodes at order 2: claiming 2 for the tip or 4 for H
+  // fails, and so does a round-off claim on H (conserved to the scheme's order only).
+  const Case& base = named("superhelix/clothoid-heavy-cantilever");
+  for (const auto& gate : {order_gate("tip_error", 2.0, "wrong claim"), order_gate("H_spread", 4.0, "wrong claim"),
+                           upper_bound_gate("H_spread_gauss", 1e-12, GateScope::AllLevels, "wrong claim")}) {
+    Case wrong = base;
+    wrong.gates = {gate};
+    EXPECT_FALSE(run_at_default_levels(wrong).passed()) << gate.metric;
+  }
+  // A 1e-4 relative change of the weight seen by the solver (not by the reference) moves the tip by
+  // ~1e-5 >> the C h^4 bound 3.9e-6 at N = 8.
+  Case perturbed = base;
+  const auto runner = perturbed.run_level;
+  perturbed.run_level = [runner](const Parameters& p, double level) {
+    Parameters shifted = p;
+    set_parameter(shifted, "weight", parameter_value(p, "weight") * (1.0 + 1e-4));
+    LevelOutput solved = runner(shifted, level);  // (its own reference is recomputed: ~0.1 s)
+    const LevelOutput exact = runner(p, level);
+    rodvv::Vec3 error;
+    int i = 0;
+    for (const char* name : {"tip_x", "tip_y", "tip_z"})
+      error[i++] = solved.metrics.at(name).computed - *exact.metrics.at(name).reference;
+    solved.metrics["tip_error"].error = error.norm();
+    return solved;
+  };
+  EXPECT_FALSE(run_at_default_levels(perturbed).passed());
 }
 
 }  // namespace

@@ -1,14 +1,18 @@
 // The 3-D Noether invariant (invariants/noether3d, PHYSICS.md §1.1): the compact and flattened
 // forms agree to round-off on arbitrary data, H equals the closed form on the helix under an axial
-// wrench (with natural twist: the m.u_hat term is needed) at every station, and bad input is named.
+// wrench (with natural twist: the m.u_hat term is needed) at every station, H with the shear and
+// extension energy equals the closed form on the special Cosserat helix at every station, and bad
+// input is named.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <iostream>
 #include <numbers>
 #include <random>
 #include <string>
+#include <utility>
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/invariants/noether3d.hpp"
@@ -104,6 +108,97 @@ TEST(Noether3d, CompactAndFlattenedFormsAgreeOnArbitraryData) {
   // Teeth: a moment that is not the constitutive one separates the forms.
   solution.moment_m[3] *= 1.0 + 1e-9;
   EXPECT_GT(inv::noether3d_summary(solution).form_difference, 1e3 * 256 * kEpsilon * summary.scale);
+}
+
+// The special Cosserat helix (references/rod3d, PHYSICS.md §7.1) sampled at stations: strains
+// u, v (v != e0: shear and extension), W_shear = (v - e0).S(v - e0)/2 in the shear_energy field.
+SpatialRodSolution cosserat_solution(const ref::SpecialCosseratHelix& rod, std::size_t stations) {
+  const auto sol = ref::special_cosserat_helix(rod);
+  SpatialRodSolution out;
+  out.length = 7.0;
+  for (std::size_t i = 0; i < stations; ++i) {
+    const double s = out.length * static_cast<double>(i) / static_cast<double>(stations - 1);
+    const auto point = ref::special_cosserat_helix_point(rod, s);
+    out.s.push_back(s);
+    out.position.push_back(point.position);
+    out.frame.push_back(point.frame);
+    out.strain_u.push_back(rod.u);
+    out.strain_v.push_back(sol.strain_v);
+    out.stiffness.push_back(Vec3(rod.C, rod.B, rod.B));
+    out.natural_strain.push_back(Vec3::Zero());
+    out.force_n.push_back(point.force);
+    out.moment_m.push_back(point.moment);
+    out.potential.push_back(0.0);
+    out.shear_energy.push_back(sol.shear_energy);
+  }
+  return out;
+}
+
+ref::SpecialCosseratHelix cosserat_rod() {
+  ref::SpecialCosseratHelix rod;
+  rod.B = 2.0;
+  rod.C = 1.3;
+  rod.GA = 20.0;
+  rod.EA = 80.0;
+  rod.u = Vec3(-0.7, 0.4, 0.9);
+  rod.root_position = Vec3(0.3, -1.0, 2.0);
+  rod.root_frame = Eigen::AngleAxisd(0.8, Vec3(1.0, 2.0, -0.5).normalized()).toRotationMatrix();
+  return rod;
+}
+
+TEST(Noether3d, SpecialCosseratHelixWithShearEqualsClosedFormAtEveryStation) {
+  // H = n.v + m.u - W_bend - W_shear, each term O(1) and formed from closed-form fields (a few eps
+  // each): 64 eps absolute for H and for the compact - flattened difference (the flattened form's
+  // chart term n.(r' - R(p) v) vanishes, and dL/dr' = n = R S (v - e0) is the shear force).
+  // The closed form is itself checked against the mpmath table (test_rod3d_reference); here H from
+  // the fields is also compared with the table's cosserat_H rows (40 digits, independent method).
+  const std::pair<ref::SpecialCosseratHelix, double> cases[] = {
+      {cosserat_rod(), 0.956196136147998583438004},
+      {ref::SpecialCosseratHelix{1.0, 0.7, 50.0, 200.0, Vec3(0.5, 0.8, 0.0), Vec3::Zero(), Mat3::Identity()},
+       0.3327418935449834067904957}};
+  for (const auto& [rod, table] : cases) {
+    const auto solution = cosserat_solution(rod, 50);
+    const double exact = ref::special_cosserat_helix(rod).H;
+    EXPECT_NEAR(exact, table, 16 * kEpsilon);
+    EXPECT_NEAR(inv::noether3d_summary(solution).mean, table, 64 * kEpsilon);
+    const auto compact = inv::noether3d_compact(solution);
+    const auto flattened = inv::noether3d_flattened(solution);
+    for (std::size_t i = 0; i < compact.size(); ++i) {
+      EXPECT_NEAR(compact[i], exact, 64 * kEpsilon) << i;
+      EXPECT_NEAR(flattened[i], exact, 64 * kEpsilon) << i;
+    }
+    const auto summary = inv::noether3d_summary(solution);
+    EXPECT_LE(summary.spread, 64 * kEpsilon);
+    EXPECT_LE(summary.form_difference, 64 * kEpsilon);
+    std::cout << "[ summary  ] special Cosserat helix: |mean H - closed form| = "
+              << std::abs(summary.mean - exact) / kEpsilon << " eps, spread " << summary.spread / kEpsilon
+              << " eps, forms " << summary.form_difference / kEpsilon << " eps\n";
+  }
+}
+
+TEST(Noether3d, SpecialCosseratHelixPerturbationsTurnRed) {
+  const auto rod = cosserat_rod();
+  const auto sol = ref::special_cosserat_helix(rod);
+  const double exact = sol.H;
+  // The shear energy must enter H: without it H is off by W_shear (here ~5e-3 >> 64 eps).
+  auto no_shear = cosserat_solution(rod, 10);
+  no_shear.shear_energy.clear();
+  EXPECT_GT(std::abs(inv::noether3d_summary(no_shear).mean - exact), 1e10 * 64 * kEpsilon * sol.shear_energy);
+  // A force lambda off by 1e-6 (relative): H moves by ~1e-6 |n.v| >> 64 eps.
+  auto wrong_lambda = cosserat_solution(rod, 10);
+  for (auto& n : wrong_lambda.force_n) n *= 1.0 + 1e-6;
+  EXPECT_GT(std::abs(inv::noether3d_summary(wrong_lambda).mean - exact), 1e3 * 64 * kEpsilon);
+  // A bending stiffness off by 1e-6 in the solution (m no longer K u): H and the two forms separate.
+  auto wrong_stiffness = cosserat_solution(rod, 10);
+  for (auto& k : wrong_stiffness.stiffness) k[1] *= 1.0 + 1e-6;
+  const auto summary = inv::noether3d_summary(wrong_stiffness);
+  EXPECT_GT(std::abs(summary.mean - exact), 1e3 * 64 * kEpsilon);
+  EXPECT_GT(summary.form_difference, 1e3 * 64 * kEpsilon);
+  // The force of a slightly different helix (lambda 1e-6 off) at every other station: no longer
+  // one equilibrium, H varies along s by ~1e-6 |n.v| / 2 ~ 2e-7 >> 64 eps.
+  auto mixed = cosserat_solution(rod, 10);
+  for (std::size_t i = 0; i < mixed.s.size(); i += 2) mixed.force_n[i] *= 1.0 + 1e-6;
+  EXPECT_GT(inv::noether3d_summary(mixed).spread, 1e3 * 64 * kEpsilon);
 }
 
 TEST(Noether3d, BadInputNamesTheField) {

@@ -761,6 +761,21 @@ TEST(ElasticaReference, RejectsBadInput) {
   expect_input_error([&] { ref::pinned_theta0_from_load(ok, kNaN); }, "P");
   expect_input_error([&] { ref::pinned_theta0_from_load(ok, 1e6); }, "P", "too large");
   expect_input_error([&] { ref::cantilever_tip({1.0, 1.0, 1e7}); }, "alpha", "too large");
+  // Just beyond the documented range (5.4e4) the error is the named InputError, not a GSL domain
+  // error from R_D (which 1e5 hit while the lower limit on pi/2 - phi_L was 1e-150).
+  expect_input_error([&] { ref::cantilever_tip({1.0, 1.0, 1e5}); }, "alpha", "too large");
+}
+
+TEST(ElasticaReference, CantileverWorksAtTheTopOfItsDocumentedRange) {
+  const auto tip = ref::cantilever_tip({1.0, 1.0, 5e4});
+  // alpha = 5e4: the tip is within ~8 exp(-sqrt(alpha)) ~ 1e-96 of vertical, so sin(phi_L) = 1 in
+  // double, and the exit-moment identity P x_tip = EI sqrt(2 alpha sin phi_L) / L (PHYSICS.md §6.1)
+  // gives x_tip = L sqrt(2 / alpha): u = L - x_tip. Tolerance: 64 eps on values of order 1.
+  EXPECT_TRUE(std::isfinite(tip.phi_L));
+  EXPECT_LE(tip.phi_L, 0.5 * std::numbers::pi);
+  EXPECT_NEAR(tip.u, 1.0 - std::sqrt(2.0 / 5e4), 64 * std::numeric_limits<double>::epsilon());
+  EXPECT_GT(tip.w, 0.99);
+  EXPECT_LT(tip.w, 1.0);
 }
 
 }  // namespace

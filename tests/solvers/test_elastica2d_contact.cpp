@@ -9,7 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <string>
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/invariants/planar_noether.hpp"
@@ -295,6 +297,232 @@ TEST(ElasticaContact, BadInputNamesTheParameter) {
   none.max_active_set_iterations = 0;
   expect_input_error([&] { e2d::solve_static_contact(cavity_problem(0.02), {e2d::Scheme::Arcs, 16}, {}, {}, {}, none); },
                      "contact.max_active_set_iterations");
+}
+
+
+// ---- ContactMethod::NewtonLcp: Josephy-Newton with the shared LCP solver (contact_lcp.hpp) ------
+//
+// Both methods solve the same discrete complementarity problem, each to ||residual||_inf <= 1e-10
+// (reported in rod.residual; both usually end far below it, quadratic convergence). By Robinson's
+// strong regularity the solutions then differ by at most kappa (r_active + r_lcp), kappa = the norm
+// of the inverse of the active KKT matrix (the condition of the problem). kappa was measured as
+// max |difference| / (r_active + r_lcp) over the runs below: <= 11 for positions (the prop) and
+// <= 3.5e2 for forces (arcs line contact, N = 64; it grows with the flat run); bounds 10 x these. A floor
+// of 1e3 eps x scale covers runs where both residuals are at round-off (the difference is then
+// the round-off of two different factorisations, measured <= 6e-13 on forces ~50).
+namespace lcp_agreement {
+
+constexpr double kPositionCondition = 10.0 * 11.0;
+constexpr double kForceCondition = 10.0 * 3.5e2;
+
+e2d::ContactOptions newton_lcp(rodvv::solvers::contact::LcpMethod m) {
+  e2d::ContactOptions c;
+  c.method = e2d::ContactMethod::NewtonLcp;
+  c.lcp = m;
+  return c;
+}
+
+struct Difference {
+  double position = 0.0, contact_force = 0.0, internal_force = 0.0, force_scale = 1.0;
+};
+
+Difference difference(const e2d::ContactSolution& a, const e2d::ContactSolution& b) {
+  Difference d;
+  for (std::size_t i = 0; i < a.rod.nodes(); ++i) {
+    d.position = std::max({d.position, std::abs(a.rod.x[i] - b.rod.x[i]), std::abs(a.rod.y[i] - b.rod.y[i])});
+    d.contact_force = std::max({d.contact_force, std::abs(a.contact_force_x[i] - b.contact_force_x[i]),
+                                std::abs(a.contact_force_y[i] - b.contact_force_y[i])});
+    d.internal_force = std::max({d.internal_force, std::abs(a.rod.force_x[i] - b.rod.force_x[i]),
+                                 std::abs(a.rod.force_y[i] - b.rod.force_y[i])});
+    d.force_scale = std::max({d.force_scale, std::abs(a.rod.force_x[i]), std::abs(a.rod.force_y[i])});
+  }
+  return d;
+}
+
+// The agreement check and the round-off checks of the LCP at the solution.
+void expect_agreement(const e2d::ContactSolution& active, const e2d::ContactSolution& lcp, const std::string& what) {
+  const Difference d = difference(active, lcp);
+  const double r = active.rod.residual + lcp.rod.residual;
+  EXPECT_LE(d.position, kPositionCondition * r + 1e3 * kEpsilon) << what;
+  EXPECT_LE(d.contact_force, kForceCondition * r + 1e3 * kEpsilon * d.force_scale) << what;
+  EXPECT_LE(d.internal_force, kForceCondition * r + 1e3 * kEpsilon * d.force_scale) << what;
+  // Same contact forces in total (the LCP path may list extra touching pairs with zero force).
+  double fa = 0.0, fl = 0.0;
+  for (const auto& k : active.contacts) fa += k.force;
+  for (const auto& k : lcp.contacts) fl += k.force;
+  EXPECT_NEAR(fa, fl, kForceCondition * r + 1e3 * kEpsilon * d.force_scale) << what;
+  // Converged: the complementarity part of the residual within the Newton tolerance 1e-10.
+  EXPECT_LE(lcp.complementarity_residual, 1e-10) << what;
+  EXPECT_LE(lcp.rod.residual, 1e-10) << what;
+  // The last LCP (at the solution): its natural-map residual within the LCP tolerance 1e-13 x
+  // max|b| (PGS stops there; Lemke is exact up to round-off, measured <= 20 eps max|b|).
+  EXPECT_LE(lcp.lcp_residual, 1e-13 * lcp.lcp_scale) << what;
+  EXPECT_LE(lcp.lcp_fischer_burmeister, 1e-13 * lcp.lcp_scale) << what;
+  EXPECT_GT(lcp.lcp_solves, 0u) << what;
+  EXPECT_EQ(lcp.lcp_solves, lcp.rod.iterations) << what;  // one LCP per Newton iteration
+}
+
+e2d::ContactSolution cavity_with(double shortening, std::size_t n, e2d::Scheme scheme, const e2d::ContactOptions& c,
+                                 double gap = 0.1) {
+  e2d::SolverOptions o;
+  o.load_steps = 8;
+  return e2d::solve_static_contact(cavity_problem(shortening), {scheme, n}, e2d::cavity_walls(gap), o, cavity_guess(), c);
+}
+
+}  // namespace lcp_agreement
+
+class NewtonLcp : public ::testing::TestWithParam<rodvv::solvers::contact::LcpMethod> {};
+
+TEST_P(NewtonLcp, AgreesWithTheActiveSetInTheCavity) {
+  using namespace lcp_agreement;
+  // N = 32: PGS needs ~1e4 sweeps per LCP on the flat contact (it converges at the rate of the
+  // Delassus block of the flat run, condition ~ (run length / h)^4); Lemke is checked at 64 too.
+  const bool lemke = GetParam() == rodvv::solvers::contact::LcpMethod::Lemke;
+  for (auto scheme : {e2d::Scheme::Polygon, e2d::Scheme::Arcs})
+    for (double d : {0.020, 0.026, 0.0345})
+      for (std::size_t n : {std::size_t{32}, std::size_t{64}}) {
+        if (!lemke && n > 32 && d > 0.03) continue;
+        const auto a = cavity_with(d, n, scheme, {});
+        const auto l = cavity_with(d, n, scheme, newton_lcp(GetParam()));
+        const std::string what = std::string(e2d::scheme_id(scheme)) + " d = " + std::to_string(d) + " N = " + std::to_string(n);
+        expect_agreement(a, l, what);
+        EXPECT_EQ(a.contacts.empty(), l.contacts.empty()) << what;
+        EXPECT_GE(min_gap(l), -64 * kEpsilon) << what;
+      }
+}
+
+TEST_P(NewtonLcp, AgreesWithTheActiveSetOnDisksRingsAndTheProp) {
+  using namespace lcp_agreement;
+  for (auto scheme : {e2d::Scheme::Polygon, e2d::Scheme::Arcs}) {
+    const std::string id(e2d::scheme_id(scheme));
+    {
+      e2d::Problem p;
+      p.start.support = e2d::Support::Clamped;
+      p.end.load.force_y = -2.0;
+      const std::vector<e2d::Obstacle> disk{e2d::disk_outside({0.6, -0.35}, 0.3)};
+      e2d::SolverOptions o;
+      o.load_steps = 4;
+      expect_agreement(e2d::solve_static_contact(p, {scheme, 64}, disk, o),
+                       e2d::solve_static_contact(p, {scheme, 64}, disk, o, {}, newton_lcp(GetParam())), id + " disk");
+    }
+    {
+      e2d::Problem p;
+      p.start.support = e2d::Support::Clamped;
+      p.end.load.force_y = -10.0;
+      const std::vector<e2d::Obstacle> ring{e2d::disk_inside({0.5, 0.0}, 0.55)};
+      e2d::SolverOptions o;
+      o.load_steps = 10;
+      expect_agreement(e2d::solve_static_contact(p, {scheme, 64}, ring, o),
+                       e2d::solve_static_contact(p, {scheme, 64}, ring, o, {}, newton_lcp(GetParam())), id + " ring");
+    }
+    {
+      e2d::Problem p;
+      p.start.support = e2d::Support::Clamped;
+      p.potential.value = [](double, double y) { return 1e-3 * y; };
+      p.potential.gradient = [](double, double) { return Eigen::Vector2d(0.0, 1e-3); };
+      auto prop = e2d::floor_at(0.0);
+      prop.s_min = 1.0;
+      const auto a = e2d::solve_static_contact(p, {scheme, 32}, {prop});
+      const auto l = e2d::solve_static_contact(p, {scheme, 32}, {prop}, {}, {}, newton_lcp(GetParam()));
+      expect_agreement(a, l, id + " prop");
+      ASSERT_EQ(l.contacts.size(), 1u);
+      EXPECT_EQ(l.lcp_candidates, 1u);  // one (node, obstacle) pair: the prop acts at s = L only
+    }
+  }
+}
+
+TEST_P(NewtonLcp, LineContactWithADegenerateDelassusMatrix) {
+  // Every node faces both walls: the two rows of a node are opposite (W singular), and inside the
+  // flat run the nodes touch with zero force (degenerate complementarity, PHYSICS.md §1.2).
+  using namespace lcp_agreement;
+  const bool lemke = GetParam() == rodvv::solvers::contact::LcpMethod::Lemke;
+  const std::size_t n = lemke ? 128 : 32;
+  const auto c = cavity_with(0.0345, n, e2d::Scheme::Polygon, newton_lcp(GetParam()));
+  EXPECT_EQ(c.lcp_candidates, 2 * (n + 1));
+  ASSERT_GE(c.contacts.size(), 4u);
+  const auto r = ref::cavity_from_shortening(kColumn, 0.0345);
+  const std::size_t first = c.contacts.front().node, last = c.contacts.back().node;
+  double inside = 0.0;
+  for (const auto& k : c.contacts)
+    if (k.node > first + 1 && k.node + 1 < last) inside += k.force;
+  // Lemke: exactly zero (non-basic); PGS stops at 1e-13 max|b| in the gaps, i.e. forces of
+  // 1e-13 max|b| / W_ii ~ 1e-8 (W_ii ~ 1e-6 on the flat run).
+  EXPECT_LE(inside, (lemke ? 0.0 : 1e-8) * r.wall_force);
+  // Zero curvature strictly inside the run: the Newton residual <= 1e-10 bounds it (measured 1e-12).
+  for (std::size_t i = first + 1; i < last; ++i) EXPECT_LT(std::abs(c.rod.kappa[i]), 1e-10) << i;
+  EXPECT_NEAR(c.rod.s[last] - c.rod.s[first], r.flat_length, 2.0 / static_cast<double>(n));  // two elements
+}
+
+TEST_P(NewtonLcp, AWallMovedByOneMicronIsDetected) {
+  // The agreement bound is ~1e-8 on forces: a wall 1e-6 further out moves P by ~3e-4 (dP/da ~ 300
+  // on the point-contact branch), far outside it.
+  using namespace lcp_agreement;
+  const auto a = cavity_with(0.026, 32, e2d::Scheme::Arcs, {});
+  const auto l = cavity_with(0.026, 32, e2d::Scheme::Arcs, newton_lcp(GetParam()), 0.1 + 1e-6);
+  const Difference d = difference(a, l);
+  EXPECT_GT(d.internal_force, 100.0 * (kForceCondition * (a.rod.residual + l.rod.residual) + 1e3 * kEpsilon * d.force_scale));
+}
+
+INSTANTIATE_TEST_SUITE_P(LemkeAndPgs, NewtonLcp,
+                         ::testing::Values(rodvv::solvers::contact::LcpMethod::Lemke,
+                                           rodvv::solvers::contact::LcpMethod::ProjectedGaussSeidel),
+                         [](const auto& p) {
+                           return p.param == rodvv::solvers::contact::LcpMethod::Lemke ? "Lemke" : "Pgs";
+                         });
+
+TEST(NewtonLcpFailure, APgsSweepLimitIsASolverErrorWithIterationsAndResidual) {
+  auto c = lcp_agreement::newton_lcp(rodvv::solvers::contact::LcpMethod::ProjectedGaussSeidel);
+  c.lcp_settings.max_iterations = 3;  // far too few for the coupled contacts of the line contact
+  try {
+    lcp_agreement::cavity_with(0.0345, 32, e2d::Scheme::Polygon, c);
+    ADD_FAILURE() << "no SolverError";
+  } catch (const rodvv::SolverError& e) {
+    EXPECT_GT(e.iterations(), 0u);
+    EXPECT_GT(e.residual(), 0.0);
+    EXPECT_NE(std::string(e.what()).find("projected Gauss-Seidel"), std::string::npos) << e.what();
+  }
+}
+
+TEST(NewtonLcpFailure, CandidateDistanceSelectsTheNearbyPairs) {
+  // Candidates within a/2 of a wall: the far wall is never in the LCP; same solution.
+  auto c = lcp_agreement::newton_lcp(rodvv::solvers::contact::LcpMethod::Lemke);
+  c.candidate_distance = 0.05;
+  const auto all = lcp_agreement::cavity_with(0.026, 64, e2d::Scheme::Polygon, lcp_agreement::newton_lcp(c.lcp));
+  const auto near = lcp_agreement::cavity_with(0.026, 64, e2d::Scheme::Polygon, c);
+  EXPECT_LT(near.lcp_candidates, 65u);
+  lcp_agreement::expect_agreement(all, near, "candidate distance");
+}
+
+TEST(ElasticaContact, BadNewtonLcpOptionsNameTheParameter) {
+  const auto solve = [](const e2d::ContactOptions& c) {
+    e2d::solve_static_contact(cavity_problem(0.02), {e2d::Scheme::Arcs, 16}, e2d::cavity_walls(0.1), {}, cavity_guess(), c);
+  };
+  auto base = lcp_agreement::newton_lcp(rodvv::solvers::contact::LcpMethod::Lemke);
+  auto c = base;
+  c.lcp_settings.tolerance = 0.0;
+  expect_input_error([&] { solve(c); }, "contact.lcp_settings.tolerance");
+  c = base;
+  c.lcp_settings.tolerance = 1.0;
+  expect_input_error([&] { solve(c); }, "contact.lcp_settings.tolerance");
+  c = base;
+  c.lcp_settings.max_iterations = 0;
+  expect_input_error([&] { solve(c); }, "contact.lcp_settings.max_iterations");
+  for (double bad : {0.0, -1.0, std::nan("")}) {
+    c = base;
+    c.candidate_distance = bad;
+    expect_input_error([&] { solve(c); }, "contact.candidate_distance");
+  }
+  for (double bad : {-1.0, std::numeric_limits<double>::infinity(), std::nan("")}) {
+    c = base;
+    c.stabilisation = bad;
+    expect_input_error([&] { solve(c); }, "contact.stabilisation");
+  }
+  c = base;
+  c.method = static_cast<e2d::ContactMethod>(7);
+  expect_input_error([&] { solve(c); }, "contact.method");
+  c = base;
+  c.lcp = static_cast<rodvv::solvers::contact::LcpMethod>(7);
+  expect_input_error([&] { solve(c); }, "contact.lcp");
 }
 
 }  // namespace

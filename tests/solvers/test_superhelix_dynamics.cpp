@@ -12,6 +12,7 @@
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/solvers/superhelix/dynamics.hpp"
+#include "rodvv/solvers/superhelix/element.hpp"
 #include "rodvv/solvers/superhelix/kinematics.hpp"
 #include "rodvv/testing/superhelix_fixtures.hpp"
 #include "rodvv/testing/tolerance.hpp"
@@ -87,6 +88,77 @@ TEST(SuperHelixDynamics, BiasAccelerationIsTimeDerivativeOfVelocity) {
     const Vec3 expected = (vp[g] - vm[g]) / (2 * t);
     const Vec3 actual = kin.position_jacobian(point.element, point.sigma) * a + zeta[g];
     EXPECT_LE((actual - expected).norm(), 1e-7 * (1.0 + expected.norm())) << g;
+  }
+}
+
+TEST(SuperHelixDynamics, AnalyticBiasMatchesGlobalFiniteDifference) {
+  // The closed-form zeta (one root-to-tip pass) against the former global central difference of the
+  // O(N) point velocities, zeta ~ [v(q + e qdot) - v(q - e qdot)] / 2e with e = cbrt(eps) / (L |qdot|):
+  // truncation e^2 |d3v| / 6 and round-off eps |v| / e are both ~ cbrt(eps)^2 ~ 4e-11 relative to the
+  // velocity scale |qdot|^2 L. Tolerance 1e-9 x (|zeta|_max + |qdot|^2 L): that estimate x 25
+  // (measured in the summary line below).
+  double worst = 0.0;
+  for (std::size_t n : {1u, 4u, 16u}) {
+    const sh::RodModel model = loaded_model(n);
+    const VecX q = random_vector(3 * n, 4.0, 14), qdot = random_vector(3 * n, 3.0, 15);
+    const sh::Kinematics kin(model, q);
+    const auto zeta = sh::bias_accelerations(model, kin, qdot);
+    const double rate = qdot.lpNorm<Eigen::Infinity>();
+    const double e = std::cbrt(kEpsilon) / (model.length * rate);
+    const auto vp = sh::Kinematics(model, q + e * qdot).point_velocities(qdot);
+    const auto vm = sh::Kinematics(model, q - e * qdot).point_velocities(qdot);
+    double scale = rate * rate * model.length;
+    for (const auto& z : zeta) scale = std::max(scale, z.norm());
+    for (std::size_t g = 0; g < zeta.size(); ++g) {
+      const Vec3 fd = (vp[g] - vm[g]) / (2.0 * e);
+      worst = std::max(worst, (fd - zeta[g]).norm() / scale);
+      EXPECT_LE((fd - zeta[g]).norm(), 1e-9 * scale) << "N = " << n << " point " << g;
+    }
+  }
+  std::cout << "[ summary  ] max |zeta_analytic - zeta_fd| / scale = " << worst << "\n";
+}
+
+TEST(SuperHelixDynamics, ElementRatesAreDirectionalDerivatives) {
+  // element_point_rates / element_end_rates against central differences of the element maps along
+  // qdot (step t = 1e-4: truncation t^2 |d3c| ~ 1e-8, round-off eps / t ~ 1e-12; tolerance 1e-7
+  // absolute on O(1) quantities), on both sides of every series / trigonometric switch
+  // (x^2 = sigma^2 |q|^2 across 1e-4, 1e-2, 1, 4).
+  const Vec3 qdot(0.7, -1.3, 0.4);
+  const double t = 1e-4;
+  for (double scale : {0.005, 0.05, 0.5, 1.5, 2.5, 6.0}) {
+    const Vec3 q = scale * Vec3(0.3, 0.8, -0.5).normalized();
+    const double sigma = 1.0;
+    const sh::ElementEndRates end = sh::element_end_rates(q, qdot, sigma);
+    const sh::ElementMaps mp = sh::element_maps(q + t * qdot, sigma), m0 = sh::element_maps(q, sigma),
+                          mm = sh::element_maps(q - t * qdot, sigma);
+    const Vec3 e0 = Vec3::UnitX();
+    EXPECT_LE((end.point.offset - m0.G * e0).norm(), 4 * kEpsilon) << scale;
+    EXPECT_LE((end.point.velocity - (mp.G * e0 - mm.G * e0) / (2 * t)).norm(), 1e-7) << scale;
+    EXPECT_LE((end.point.bias - (mp.dG0 * qdot - mm.dG0 * qdot) / (2 * t)).norm(), 1e-7) << scale;
+    EXPECT_LE((end.angular_bias - (mp.G * qdot - mm.G * qdot) / (2 * t)).norm(), 1e-7) << scale;
+    // the angular velocity: dE/dt E^T = [G qdot]x (ALGORITHMS.md §1.3 with the base frame = I)
+    const Mat3 W = (mp.E - mm.E) / (2 * t) * m0.E.transpose();
+    EXPECT_LE((end.angular_velocity - Vec3(W(2, 1), W(0, 2), W(1, 0))).norm(), 1e-7) << scale;
+    const sh::ElementRates point = sh::element_point_rates(q, qdot, 0.37 * sigma);
+    const sh::PointMaps pp = sh::element_point_maps(q + t * qdot, 0.37 * sigma),
+                        pm = sh::element_point_maps(q - t * qdot, 0.37 * sigma);
+    EXPECT_LE((point.bias - (pp.dG0 * qdot - pm.dG0 * qdot) / (2 * t)).norm(), 1e-7) << scale;
+  }
+  // The coefficient rates are continuous across the series / trigonometric switch at x^2 = 4 (both
+  // sides within 1e-12 relative: the series truncation ~1e-21, the trigonometric cancellation
+  // ~30 x^2 eps ~ 3e-14), and at x^2 = 1 (switch of the term count).
+  for (double y : {1.0, 4.0}) {
+    const auto below = sh::helix_coefficient_rates(std::nextafter(y, 0.0)), above = sh::helix_coefficient_rates(y);
+    EXPECT_TRUE(rodvv::testing::is_close(below.dg1, above.dg1, 1e-12, 0.0)) << y;
+    EXPECT_TRUE(rodvv::testing::is_close(below.dg2, above.dg2, 1e-12, 0.0)) << y;
+  }
+  // Teeth: dg1 / dg2 are the y-derivatives of g1 / g2 (central difference, step 1e-5: ~1e-10).
+  for (double y : {0.3, 2.0, 9.0}) {
+    const double dy = 1e-5;
+    const auto rates = sh::helix_coefficient_rates(y);
+    const auto cp = sh::helix_coefficients(y + dy), cm = sh::helix_coefficients(y - dy);
+    EXPECT_NEAR(rates.dg1, (cp.g1 - cm.g1) / (2 * dy), 1e-9) << y;
+    EXPECT_NEAR(rates.dg2, (cp.g2 - cm.g2) / (2 * dy), 1e-9) << y;
   }
 }
 

@@ -35,5 +35,6 @@ void register_reissner_cases(Registry& registry);  // elastica/reissner-*: exten
 void register_superhelix_cases(Registry& registry);  // superhelix/*: 3-D Super-Helix rods
 void register_buckling_cases(Registry& registry);  // elastica/euler-*: Euler loads, eigenproblem
 void register_contact_cases(Registry& registry);  // elastica-contact/*: cavity, soft walls, prop
+void register_sleeve_cases(Registry& registry);  // sleeve/*: Eshelby-like force, elastica arm scale
 
 }  // namespace rodvv::harness

@@ -12,6 +12,12 @@
 //      L(q, q') = W_bend(u(p, p')) + W_shear + V(r) + n.(r' - R(p) v),
 //      u(p, p') = 2 Im(conj(p) (x) p') (linear in p'), so dL/dr' = n and
 //      dL/dp' = (du/dp')^T K (u - u_hat), du/dw' = -2 x, du/dx' = 2 (w I - [x]x) for p = (w, x).
+//  Shear and extension (special Cosserat rod): W_shear per unit length is read from
+//  solution.shear_energy (empty: 0, a Kirchhoff rod) and v from solution.strain_v (!= e0). In the
+//  flattened form the shear energy is a function W_shear(v), v = R(p)^T r', whose dL/dr' is
+//  R dW_shear/dv = n, so the sum is again n.r' + m.u and the multiplier form used here (n given,
+//  constraint term n.(r' - R(p) v) = 0) is the same number: the two forms agree with shear too
+//  (checked on the exact special Cosserat helix, tests/invariants/test_noether3d.cpp).
 //  The two agree to round-off (u is linear in q' at fixed q) whenever the stored m is the
 //  constitutive moment R K (u - u_hat): the flattened form takes m from dW/du, the compact form
 //  reads the stored m (so their difference also checks a solver's constitutive output).

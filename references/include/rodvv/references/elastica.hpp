@@ -84,7 +84,7 @@ double pinned_theta0_from_load(const PinnedColumn& column, double P);
 //    sqrt(alpha) = K(k) - F(psi0, k), psi0 = asin(1/(k sqrt 2)).
 // Requires L > 0, EI > 0, P > 0 (so alpha > 0). Solved with TOMS 748 on phi_L (or on
 // pi/2 - phi_L when the tip rotation is beyond pi/4, so that k' stays accurate); alpha up to
-// about 1.2e5 (beyond, pi/2 - phi_L < 1e-150: InputError naming alpha).
+// about 5.4e4 (beyond, pi/2 - phi_L < 1e-100: InputError naming alpha).
 struct TipLoadedCantilever {
   double L = 1.0;
   double EI = 1.0;

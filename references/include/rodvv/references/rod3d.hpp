@@ -19,6 +19,8 @@
 //  4. End-moment roll-up in 3-D: a cantilever clamped with tangent t0 and a dead end moment M a
 //     (a a unit vector normal to t0) bends into a circle of radius EI/M in the plane of t0 and
 //     a x t0; M L / EI = 2 pi closes it. H = M^2 / (2 EI) (n = 0).
+//  5. Special Cosserat (shearable, extensible) rod with constant body strains (PHYSICS.md §7.1,
+//     §1.1): see SpecialCosseratHelix below.
 #include <cstddef>
 
 #include <Eigen/Geometry>
@@ -84,5 +86,67 @@ struct RollUpPoint {
 };
 RollUpPoint end_moment_roll_up_point(const EndMomentRollUp& rod, double s);  // s in [0, L]
 double end_moment_roll_up_invariant(const EndMomentRollUp& rod);           // M^2 / (2 EI)
+
+// ---- 5. special Cosserat helix ------------------------------------------------------------------
+// A special Cosserat rod (shear and extension; Antman 2005 ch. 8; PHYSICS.md §1.1, §7.1) with
+// isotropic bending and shear, in the material components of this code (index 0 = the director
+// n0 along the rod): K = diag(C, B, B) acting on u = (twist, kappa1, kappa2), S = diag(EA, GA, GA)
+// acting on v - e0 (v = R^T r'), no natural curvature, v_hat = e0. Constant body strains are an
+// equilibrium without distributed loads iff (body components) the force N = S (v - e0) and the
+// moment M = K u satisfy u x N = 0 and u x M + v x N = 0: N = lambda u and, with
+// v = e0 + lambda S^-1 u and u = (u0, u1, u2),
+//     lambda^2 u0 (1/EA - 1/GA) + lambda + (B - C) u0 = 0,
+// of which the root that tends to (C - B) u0 as EA, GA -> inf is taken (written without
+// cancellation: lambda = 2 (C - B) u0 / (1 + sqrt(1 - 4 u0^2 (1/EA - 1/GA)(B - C)))).
+// (PHYSICS.md writes the tangent director as d3: its u = (u1, 0, u3) is u = (u3, u1, 0) here; its
+// example B = 1, C = 0.7, GA = 50, EA = 200, u = (0.5, 0.8, 0) gives lambda = -0.14983162862297,
+// radius 0.899886505361503, advance 0.527767502020969.)
+// The frame rotates about the fixed axis a = R0 u/|u| at the rate |u|: R(s) = R0 exp(s [u]x); the
+// centreline is a helix about a with advance v.u/|u| per unit s and radius |v_perp|/|u|
+// (v_perp = v - (v.u/|u|^2) u), through the axis point r0 + R0 (u x v)/|u|^2; the force
+// n = lambda R0 u is constant and along the axis; m + (r - r_axis) x n = M a, M = u.K u/|u|
+// (the axial wrench). H = n.v + m.u - W_bend - W_shear (V = 0) = lambda u0 + W_bend + W_shear
+// with W_bend = u.K u/2, W_shear = lambda^2 u.S^-1 u/2 (PHYSICS.md §1.1).
+// Bad input -> InputError naming the parameter: B, C, EA, GA not positive finite; u non-finite
+// or without a bending part (u1 = u2 = 0: the helix axis and lambda are undefined; "u");
+// no real root (1 - 4 u0^2 (1/EA - 1/GA)(B - C) < 0; "u"); root_frame not a rotation (1e-12).
+struct SpecialCosseratHelix {
+  double B = 1.0;   // bending stiffness (both axes), > 0
+  double C = 1.0;   // twisting stiffness, > 0
+  double GA = 1.0;  // shear stiffness (both axes), > 0
+  double EA = 1.0;  // extensional stiffness, > 0
+  Vec3 u = Vec3(0.5, 0.8, 0.0);  // body strains (twist, kappa1, kappa2), (u1, u2) != 0
+  Vec3 root_position = Vec3::Zero();
+  Mat3 root_frame = Mat3::Identity();  // R0, a rotation
+};
+
+struct SpecialCosseratHelixSolution {
+  double lambda = 0.0;           // N = lambda u
+  Vec3 strain_v;                 // v = e0 + lambda S^-1 u (body)
+  Vec3 force_body;               // N = lambda u
+  Vec3 moment_body;              // M = K u
+  Vec3 axis;                     // a = R0 u / |u| (world, unit)
+  Vec3 axis_point;               // a point of the helix axis, r0 + R0 (u x v) / |u|^2 (world)
+  double rate = 0.0;             // |u|: rotation rate of the frame about a
+  double advance = 0.0;          // v.u/|u|: axial advance per unit s
+  double radius = 0.0;           // |v_perp| / |u|
+  double axial_force = 0.0;      // n.a = lambda |u|
+  double axial_moment = 0.0;     // (m + (r - r_axis) x n).a = u.K u / |u|
+  double bending_energy = 0.0;   // W_bend = u.K u / 2
+  double shear_energy = 0.0;     // W_shear = (v - e0).S(v - e0) / 2
+  double H = 0.0;                // n.v + m.u - W_bend - W_shear
+};
+SpecialCosseratHelixSolution special_cosserat_helix(const SpecialCosseratHelix& rod);
+
+// Pose and stresses at arclength s (finite): r(s) = r0 + s (v.a_b) a + R0 [sin(ks)/k v_perp +
+// (1 - cos(ks))/k (u_b x v_perp)] (a_b = u/|u|, k = |u|), R(s) = R0 exp(s [u]x) (Rodrigues),
+// n = R N, m = R M (world).
+struct CosseratHelixPoint {
+  Vec3 position;
+  Mat3 frame;
+  Vec3 force;
+  Vec3 moment;
+};
+CosseratHelixPoint special_cosserat_helix_point(const SpecialCosseratHelix& rod, double s);
 
 }  // namespace rodvv::references

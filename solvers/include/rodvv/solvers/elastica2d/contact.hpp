@@ -23,10 +23,21 @@
 // "guess.theta" naming the node and the obstacle).
 // Failure: SolverError when Newton fails for an active set or the active set has not settled after
 // options.max_active_set_iterations updates in a step.
+//
+// Second method, ContactMethod::NewtonLcp: a Josephy-Newton (SQP) iteration whose subproblem is
+// the LCP of the shared solver (solvers/contact/lcp.hpp, Lemke or projected Gauss-Seidel);
+// see contact_lcp.hpp. It solves the same discrete complementarity problem, so both methods agree
+// up to their tolerances (measured: forces within 3.5e2 x the sum of the two final residuals).
+// Cost: one banded solve per candidate pair per iteration, O(N m) (m = 2(N + 1) for the cavity
+// with every pair): ~10 x (N = 32) to ~100 x (N = 256) the active set (bench_contact2d). It fails
+// (SolverError) where an iterate is unstable even with its loaded pairs held, e.g. the cavity line
+// contact from N = 256 on; the active set is the default.
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "rodvv/common/planar_rod.hpp"
+#include "rodvv/solvers/contact/lcp.hpp"
 #include "rodvv/solvers/elastica2d/discretisation.hpp"
 #include "rodvv/solvers/elastica2d/obstacle.hpp"
 #include "rodvv/solvers/elastica2d/problem.hpp"
@@ -34,8 +45,21 @@
 
 namespace rodvv::solvers::elastica2d {
 
+enum class ContactMethod { ActiveSet, NewtonLcp };
+
 struct ContactOptions {
-  std::size_t max_active_set_iterations = 200;  // per load step, >= 1
+  std::size_t max_active_set_iterations = 200;  // ActiveSet: per load step, >= 1
+  ContactMethod method = ContactMethod::ActiveSet;
+  // NewtonLcp: the LCP solver of each Newton iterate and its settings (tolerance in (0, 1),
+  // max_iterations >= 1; see solvers/contact/lcp.hpp).
+  contact::LcpMethod lcp = contact::LcpMethod::Lemke;
+  contact::LcpSettings lcp_settings{};
+  // NewtonLcp: the LCP of an iterate holds the pairs with gap <= candidate_distance there, plus
+  // every pair carrying a force; > 0, +inf (default) = every (node, obstacle) pair.
+  double candidate_distance = std::numeric_limits<double>::infinity();
+  // NewtonLcp: the penalty rho/2 g_p^2 on the loaded pairs that keeps the condensed tangent
+  // positive definite (see contact_lcp.hpp), rho = stabilisation x max EI / L^3; >= 0 (0 = off).
+  double stabilisation = 1e3;
 };
 
 // One active (node, obstacle) pair at the solution.
@@ -49,11 +73,24 @@ struct NodeContact {
 
 struct ContactSolution {
   PlanarRodSolution rod;               // as solve_static (internal force from the edge multipliers)
-  std::vector<NodeContact> contacts;   // active pairs, sorted by node
+  std::vector<NodeContact> contacts;   // active pairs, sorted by node (NewtonLcp: the pairs with
+                                       // lambda > 0 or touching, gap <= 64 eps (1 + max|r|))
   std::vector<double> contact_force_x;  // total contact force on each node (nodes() values)
   std::vector<double> contact_force_y;
   std::vector<double> min_gap;          // min over the obstacles acting on the node (+inf if none)
   std::size_t active_set_iterations = 0;  // active-set updates summed over the load steps
+                                          // (NewtonLcp: iterations whose set of loaded pairs changed)
+  // Both methods: max over the acting pairs of |min(lambda, g)| at the solution (lambda = 0 off the
+  // contacts): the complementarity part of the residual.
+  double complementarity_residual = 0.0;
+  // NewtonLcp only (0 for ActiveSet): one LCP per Newton iteration.
+  std::size_t lcp_solves = 0;
+  std::size_t lcp_iterations = 0;      // Lemke pivots or PGS sweeps, summed over the solves
+  std::size_t lcp_max_iterations = 0;  // the largest single solve
+  std::size_t lcp_candidates = 0;      // size of the last LCP (candidate pairs)
+  double lcp_residual = 0.0;           // natural-map residual of the last LCP (gap units)
+  double lcp_fischer_burmeister = 0.0;  // Fischer-Burmeister residual of the last LCP
+  double lcp_scale = 0.0;              // max |b| of the last LCP (its residual is relative to it)
 };
 
 void validate(const ContactOptions& options);

@@ -42,4 +42,20 @@ struct ClothoidJacobian {
 
 ClothoidJacobian clothoid_element_jacobian(const Vec3& a, const Vec3& b, double ell, double tolerance = 1e-17);
 
+// Rates along strain velocities (a(t) = a + t adot, b(t) = b + t bdot), for the velocity terms of
+// the dynamics, in the element's base frame at sigma = ell: dR/dt = [angular_velocity]x R,
+// velocity = dr/dt, angular_bias = d(angular_velocity)/dt and bias = d2r/dt2 (at constant adot,
+// bdot). The series recurrence carried to second order in t (three 3 x 3 matrices per term, same
+// subdivision), so the rates are exact to round-off. Same InputError as clothoid_element, plus
+// "adot" / "bdot" non-finite.
+struct ClothoidRates {
+  Mat3 R;
+  Vec3 r;
+  Vec3 angular_velocity, velocity;
+  Vec3 angular_bias, bias;
+};
+
+ClothoidRates clothoid_element_rates(const Vec3& a, const Vec3& b, const Vec3& adot, const Vec3& bdot, double ell,
+                                     double tolerance = 1e-17);
+
 }  // namespace rodvv::solvers::superhelix

@@ -6,9 +6,15 @@
 //
 //   M(q) qddot + K (q - q0) = -gamma K qdot + F_ext(q) - sum_g m_g J_g^T (Jdot_g qdot)
 //
-// Velocity terms: the bias acceleration zeta_g = Jdot_g qdot = d/de [J_g(q + e qdot) qdot] at
-// e = 0 of every Gauss point, by a central difference of the O(N) point velocities
-// (e = cbrt(eps) / (L |qdot|_inf): truncation and round-off both ~1e-11 relative).
+// Velocity terms: the bias acceleration zeta_g = Jdot_g qdot (plus the root's acceleration terms
+// when the root moves, root_motion.hpp) of every Gauss point, in closed form in one root-to-tip pass
+// (the Featherstone bias recursion): with omega_Q, alpha_Q, a_Q the angular velocity, the angular
+// and the linear bias acceleration of base Q (root values at Q = 0),
+//   zeta_g = a_Q + alpha_Q x d_g + omega_Q x (omega_Q x d_g) + 2 omega_Q x u_g + R_Q c''_g,
+//   a_{Q+1} = (the same at the element's end),  alpha_{Q+1} = alpha_Q + omega_Q x W_Q + R_Q W'_Q,
+//   omega_{Q+1} = omega_Q + W_Q,
+// where u_g = T_g qdot_Q, W_Q = R_Q G(ell) qdot_Q, and c'', W' are the element-local second
+// directional derivatives of element.hpp (ElementRates). Both paths use this same zeta.
 //
 // Semi-implicit Euler (§1.5), implicit in the elastic and damping terms, explicit in the rest:
 //   (M_n + D) dv = h (-K (q_n - q0) + B_n) - D qdot_n,   D = (h^2 + h gamma) K,
@@ -19,6 +25,11 @@
 //   Recursive: the articulated-body recursion of §1.6 (tip-to-root inertias, root-to-tip solve),
 //   O(N), with the bias and gravity entering as point wrenches beta_g = h (m_g zeta_g - m_g g) and
 //   the end loads as the tip wrench.
+// Recursive cost: one root-to-tip pass (kinematics and zeta), one tip-to-root pass (articulated
+// inertias, 6 x 6) and one root-to-tip solve, no heap allocation per element (a reused workspace).
+// Moving root (root_motion.hpp): the kinematics starts from the root pose at state.time and zeta
+// carries the root's acceleration terms (so the forward solve starts from A_0 = 0); overloads with a
+// RootMotion argument, the others use the model's fixed root.
 // Both throw InputError for h <= 0 or non-finite, or a state of the wrong size / non-finite.
 #include <cstddef>
 #include <vector>
@@ -26,6 +37,7 @@
 #include "rodvv/common/eigen_types.hpp"
 #include "rodvv/solvers/superhelix/kinematics.hpp"
 #include "rodvv/solvers/superhelix/model.hpp"
+#include "rodvv/solvers/superhelix/root_motion.hpp"
 
 namespace rodvv::solvers::superhelix {
 
@@ -39,6 +51,9 @@ enum class DynamicsPath { Dense, Recursive };
 
 // zeta_g = Jdot_g qdot at every Gauss point (Kinematics::points() order).
 std::vector<Vec3> bias_accelerations(const RodModel& model, const Kinematics& kinematics, const VecX& qdot);
+// The same with a moving root: `kinematics` must have been built from root.position / root.frame.
+std::vector<Vec3> bias_accelerations(const RodModel& model, const Kinematics& kinematics, const VecX& qdot,
+                                     const RootState& root);
 
 // Dense generalised mass matrix sum_g m_g J_g^T J_g (3N x 3N, symmetric positive semi-definite:
 // twist rates of a straight element move no mass).
@@ -48,6 +63,11 @@ MatX mass_matrix(const Kinematics& kinematics);
 VecX velocity_change(const RodModel& model, const DynamicState& state, double h, DynamicsPath path);
 // One full step.
 DynamicState step(const RodModel& model, const DynamicState& state, double h, DynamicsPath path);
+// The same with a prescribed root motion, evaluated at state.time.
+VecX velocity_change(const RodModel& model, const DynamicState& state, double h, DynamicsPath path,
+                     const RootMotion& root);
+DynamicState step(const RodModel& model, const DynamicState& state, double h, DynamicsPath path,
+                  const RootMotion& root);
 
 // Energies: kinetic 1/2 sum_g m_g |v_g|^2 (= 1/2 qdot^T M qdot), and total = kinetic + elastic +
 // gravity - F_end . r_tip (the end moment is left out: it has no potential in 3-D).

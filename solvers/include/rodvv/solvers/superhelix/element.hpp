@@ -44,6 +44,37 @@ struct PointMaps {
 };
 PointMaps element_point_maps(const Vec3& q, double sigma);
 
+// Rates along a coordinate velocity (q(t) = q + t qdot, qddot = 0), for the velocity terms of the
+// dynamics (ALGORITHMS.md §1.4: zeta = Jdot qdot), in the element's base frame, in closed form:
+//   velocity = dG0 qdot = dc/dt with c = G(sigma) e0,
+//   bias     = d/dt (dG0) qdot = d2c/dt2, the second directional derivative of c along qdot,
+//   angular_velocity = G(sigma) qdot (the frame's rate relative to the base, dR/dt = [.]x R),
+//   angular_bias     = d/dt (G) qdot,
+// by differentiating the formulas above along qdot: d(x^2)/dt = 2 sigma^2 q.qdot, df1/d(x^2) = g1/2,
+// df2/d(x^2) = g2/2, and dg1/d(x^2), dg2/d(x^2) from helix_coefficient_rates. Exact (no step size),
+// checked against a central difference in the tests.
+struct HelixCoefficientRates {
+  double dg1 = 1.0 / 180.0, dg2 = 1.0 / 1260.0;  // d g1 / d(x^2), d g2 / d(x^2)
+};
+HelixCoefficientRates helix_coefficient_rates(double x_squared);
+
+struct ElementRates {
+  Vec3 offset;    // c = G(sigma) e0
+  Mat3 jacobian;  // dG0 (column i = dc/dq_i)
+  Vec3 velocity;  // dG0 qdot
+  Vec3 bias;      // d/dt(dG0) qdot
+};
+ElementRates element_point_rates(const Vec3& q, const Vec3& qdot, double sigma);
+
+struct ElementEndRates {
+  ElementRates point;
+  Mat3 E;  // exp(sigma [q]x)
+  Mat3 G;  // int_0^sigma exp(u [q]x) du
+  Vec3 angular_velocity;  // G qdot
+  Vec3 angular_bias;      // d/dt(G) qdot
+};
+ElementEndRates element_end_rates(const Vec3& q, const Vec3& qdot, double sigma);
+
 inline Mat3 skew(const Vec3& a) {
   Mat3 m;
   m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
