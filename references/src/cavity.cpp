@@ -3,13 +3,12 @@
 // v = F(amp, k), E(am v) = E(amp, k), cn v = cos(amp), dn v = cos(psi/2) (elliptic.hpp, Carlson).
 #include "rodvv/references/cavity.hpp"
 
-#include <boost/math/tools/toms748_solve.hpp>
-
 #include <cmath>
 #include <cstdint>
 #include <numbers>
 #include <string>
 
+#include "bracketed_root.hpp"
 #include "elliptic.hpp"
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
@@ -27,11 +26,7 @@ double root(const char* method, F f, double a, double b) {
     throw SolverError(method, std::string(method) + ": root not bracketed", 0, std::min(std::abs(fa), std::abs(fb)));
   if (fa == 0.0) return a;
   if (fb == 0.0) return b;
-  std::uintmax_t it = 200;
-  const auto r = boost::math::tools::toms748_solve(f, a, b, fa, fb,
-                                                   boost::math::tools::eps_tolerance<double>(), it);
-  if (it >= 200) throw SolverError(method, std::string(method) + ": TOMS 748 did not converge", it, f(r.first));
-  return 0.5 * (r.first + r.second);
+  return detail::solve_bracketed(method, f, a, b, fa, fb);
 }
 
 void validate(const CavityColumn& c) {

@@ -26,6 +26,7 @@
 #include <numbers>
 #include <string>
 
+#include "bracketed_root.hpp"
 #include "elliptic.hpp"
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
@@ -33,29 +34,9 @@
 namespace rodvv::references {
 namespace {
 
+using detail::solve_bracketed;
 using std::numbers::pi;
 using std::numbers::sqrt2;
-
-constexpr std::uintmax_t kMaxRootIterations = 200;
-
-// Bracketing TOMS 748 solve of f on [a, b] (f(a), f(b) of opposite signs, checked by the caller)
-// to a bracket of 4 eps relative width; returns the midpoint. SolverError if it does not converge.
-template <class F>
-double solve_bracketed(const char* method, F f, double a, double b, double fa, double fb) {
-  std::uintmax_t iterations = kMaxRootIterations;
-  const auto bracket = boost::math::tools::toms748_solve(
-      f, a, b, fa, fb, boost::math::tools::eps_tolerance<double>(), iterations);
-  const double root = 0.5 * (bracket.first + bracket.second);
-  if (iterations >= kMaxRootIterations) {
-    const double residual = f(root);
-    throw SolverError(method,
-                      std::string(method) + ": TOMS 748 did not converge in " +
-                          std::to_string(iterations) + " iterations (residual " +
-                          format_value(residual) + ")",
-                      static_cast<std::size_t>(iterations), residual);
-  }
-  return root;
-}
 
 void require_s_in_span(double s, double L) { require_closed_interval("s", s, 0.0, L); }
 

@@ -25,6 +25,7 @@
 #include <numbers>
 #include <string>
 
+#include "bracketed_root.hpp"
 #include "elliptic.hpp"
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
@@ -33,33 +34,15 @@
 namespace rodvv::references {
 namespace {
 
+using detail::solve_bracketed;
 using std::numbers::pi;
 
-constexpr std::uintmax_t kMaxRootIterations = 200;
 // pi/2 = kHalfPiHi + kHalfPiLo: the low part keeps pi/2 - theta0 accurate near theta0 -> pi/2.
 constexpr double kHalfPiHi = 0.5 * pi;
 constexpr double kHalfPiLo = 6.123233995736766036e-17;
 // Smallest b = (pi/2 - beta)/2 allowed: cos^2 chi + Delta^2 ~ b^2 stays above the lower argument
 // limit of GSL's R_D (2/DBL_MAX^(2/3) ~ 6e-206). sqrt(P/B) l ~ ln(8/b) + ... <= ~230.
 constexpr double kMinB = 1e-100;
-
-// Bracketing TOMS 748 of f on [lo, hi] (fa, fb of opposite signs) to a 4 eps relative bracket.
-template <class F>
-double solve_bracketed(const char* method, F f, double lo, double hi, double f_lo, double f_hi) {
-  std::uintmax_t iterations = kMaxRootIterations;
-  const auto bracket = boost::math::tools::toms748_solve(
-      f, lo, hi, f_lo, f_hi, boost::math::tools::eps_tolerance<double>(), iterations);
-  const double root = 0.5 * (bracket.first + bracket.second);
-  if (iterations >= kMaxRootIterations) {
-    const double residual = f(root);
-    throw SolverError(method,
-                      std::string(method) + ": TOMS 748 did not converge in " +
-                          std::to_string(iterations) + " iterations (residual " +
-                          format_value(residual) + ")",
-                      static_cast<std::size_t>(iterations), residual);
-  }
-  return root;
-}
 
 // The scaled state of one arm (lengths times lambda = sqrt(P/B)).
 struct ArmState {

@@ -24,19 +24,10 @@ using rodvv::Vec3;
 using rodvv::VecX;
 using rodvv::testing::superhelix::random_vector;
 
+// The common loaded model, with the root also moved off the origin.
 sh::RodModel loaded_model(std::size_t n) {
-  sh::RodModel model;
-  model.elements = n;
-  model.length = 0.8;
-  model.stiffness = Vec3(0.05, 0.1, 0.13);
-  model.natural_strain = Vec3(0.5, -1.0, 2.0);
-  model.line_density = 0.02;
-  model.gravity = Vec3(0.0, 0.0, -9.81);
-  model.end_force = Vec3(0.01, 0.0, 0.02);
-  model.end_moment = Vec3(0.0, 0.003, 0.0);
-  model.rayleigh_stiffness = 0.01;
+  sh::RodModel model = rodvv::testing::superhelix::loaded_model(n);
   model.root_position = Vec3(0.1, -0.2, 0.3);
-  model.root_frame = Eigen::AngleAxisd(0.4, Vec3(0.2, 1.0, -0.3).normalized()).toRotationMatrix();
   return model;
 }
 

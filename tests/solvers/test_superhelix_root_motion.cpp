@@ -31,17 +31,10 @@ using rodvv::VecX;
 using rodvv::testing::kEpsilon;
 using rodvv::testing::superhelix::random_vector;
 
+// The common loaded model without the end moment.
 sh::RodModel hanging_model(std::size_t n) {
-  sh::RodModel model;
-  model.elements = n;
-  model.length = 0.8;
-  model.stiffness = Vec3(0.05, 0.1, 0.13);
-  model.natural_strain = Vec3(0.5, -1.0, 2.0);
-  model.line_density = 0.02;
-  model.gravity = Vec3(0.0, 0.0, -9.81);
-  model.end_force = Vec3(0.01, 0.0, 0.02);
-  model.rayleigh_stiffness = 0.01;
-  model.root_frame = Eigen::AngleAxisd(0.4, Vec3(0.2, 1.0, -0.3).normalized()).toRotationMatrix();
+  sh::RodModel model = rodvv::testing::superhelix::loaded_model(n);
+  model.end_moment = Vec3::Zero();
   return model;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <cstddef>
 #include <numbers>
@@ -64,6 +65,24 @@ inline sh::StaticOptions roll_up_options() {
   sh::StaticOptions options;
   options.load_steps = 4;
   return options;
+}
+
+// A loaded, damped, naturally curved and twisted rod with a tilted root frame: gravity, a dead end
+// force and moment (the dynamics tests' common model; callers change single fields).
+inline sh::RodModel loaded_model(std::size_t n) {
+  sh::RodModel model;
+  model.elements = n;
+  model.length = 0.8;
+  model.stiffness = rodvv::Vec3(0.05, 0.1, 0.13);
+  model.natural_strain = rodvv::Vec3(0.5, -1.0, 2.0);
+  model.line_density = 0.02;
+  model.gravity = rodvv::Vec3(0.0, 0.0, -9.81);
+  model.end_force = rodvv::Vec3(0.01, 0.0, 0.02);
+  model.end_moment = rodvv::Vec3(0.0, 0.003, 0.0);
+  model.rayleigh_stiffness = 0.01;
+  model.root_frame =
+      Eigen::AngleAxisd(0.4, rodvv::Vec3(0.2, 1.0, -0.3).normalized()).toRotationMatrix();
+  return model;
 }
 
 }  // namespace rodvv::testing::superhelix
