@@ -352,6 +352,7 @@ ContactSolution solve_static_contact(const Problem& problem, const Discretisatio
     out.lcp_residual = lcp_stats.residual;
     out.lcp_fischer_burmeister = lcp_stats.fischer_burmeister;
     out.lcp_scale = lcp_stats.scale;
+    out.lcp_rescaled = lcp_stats.rescaled;
   }
   out.contact_force_x.assign(n + 1, 0.0);
   out.contact_force_y.assign(n + 1, 0.0);

@@ -29,9 +29,10 @@
 // see contact_lcp.hpp. It solves the same discrete complementarity problem, so both methods agree
 // up to their tolerances (measured: forces within 3.5e2 x the sum of the two final residuals).
 // Cost: one banded solve per candidate pair per iteration, O(N m) (m = 2(N + 1) for the cavity
-// with every pair): ~10 x (N = 32) to ~100 x (N = 256) the active set (bench_contact2d). It fails
-// (SolverError) where an iterate is unstable even with its loaded pairs held, e.g. the cavity line
-// contact from N = 256 on; the active set is the default.
+// with every pair): ~10 x (N = 32) to ~100 x (N = 256) the active set (bench_contact2d), plus the
+// dense Lemke tableau, O(m^2) per pivot (cavity line contact, N = 512, every pair: 19 s; with
+// candidate_distance = a/2: 1 s). It fails (SolverError) where an iterate is unstable even with
+// its loaded pairs held; the active set is the default.
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -91,6 +92,8 @@ struct ContactSolution {
   double lcp_residual = 0.0;           // natural-map residual of the last LCP (gap units)
   double lcp_fischer_burmeister = 0.0;  // Fischer-Burmeister residual of the last LCP
   double lcp_scale = 0.0;              // max |b| of the last LCP (its residual is relative to it)
+  std::size_t lcp_rescaled = 0;        // Lemke solves repeated on the Jacobi-scaled LCP because
+                                        // the unscaled one was inaccurate (contact_lcp.cpp)
 };
 
 void validate(const ContactOptions& options);

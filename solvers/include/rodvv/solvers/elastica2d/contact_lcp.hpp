@@ -17,10 +17,15 @@
 //
 //     0 <= lambda+ _|_ W lambda+ + b >= 0,    W = G K^-1 G^T (Delassus), b = g + G dz0,
 //
-// solved by contact::solve_lcp (Lemke: exact, or projected Gauss-Seidel). W is symmetric
-// positive semidefinite where the rod is stable (K^-1 restricted to the positions is the
-// compliance on the constraint manifold); rows of pairs that cannot both be active (the two walls
-// at one node) make it singular, which Lemke's lexicographic rule and PGS both tolerate. W is
+// solved by contact::solve_lcp (Lemke: exact, or projected Gauss-Seidel), and the solution is
+// verified: one with a natural-map residual above 1e-6 max|b| is never taken as a step. Lemke is
+// then run again on the Jacobi-scaled LCP (D W D, D b), D = diag(W)^-1/2: on line contacts from
+// N ~ 128 on, the unscaled tableau (nodal compliances from ~h^3 / EI to ~L^3 / EI, a near-singular
+// block on the flat run) returned wrong solutions (residual 5e-3 .. 2e-1 max|b|) whose steps
+// derailed the iteration (the SolverError from N = 256 of the earlier version); contact_lcp.cpp.
+// W is symmetric positive semidefinite where the rod is stable (K^-1 restricted to the positions
+// is the compliance on the constraint manifold); rows of pairs that cannot both be active (the
+// two walls at one node) make it singular, which Lemke's lexicographic rule and PGS both tolerate. W is
 // symmetrised ((W + W^T)/2) against the round-off of the solves. The step dz is then recomputed
 // by one solve with the full right-hand side (no cancellation between dz0 and Z lambda+).
 //
@@ -34,9 +39,10 @@
 // the Josephy-Newton step (quadratic convergence is kept). rho = contact.stabilisation x max EI /
 // L^3, raised x 100 (at most 3 times) when W still has a negative diagonal or the LCP fails.
 // Limitation: an iterate that is unstable even with A held (an overshooting step loads a free
-// span beyond its own Euler load) ends in SolverError; measured on the cavity line contact
-// (shortening 0.0345, 8 displacement steps) from N = 256 on (N <= 128 converge), with every pair
-// or with candidate_distance = a/2; the active-set path converges there.
+// span beyond its own Euler load) ends in SolverError. Measured on the cavity line contact
+// (shortening 0.0345, 8 displacement steps, Lemke): converges at N = 256 (every pair or
+// candidate_distance = a/2) and N = 512 (candidate_distance = a/2), polygon and arcs, in 31-35
+// Newton iterations, agreeing with the active set (tests NewtonLcpLineContact.*).
 //
 // Globalisation: the step is the exact Newton direction of the smooth system selected by the
 // LCP, (F_rho, g_p for lambda+_p > 0, lambda_p otherwise), so the backtracking runs on its 2-norm
@@ -76,6 +82,7 @@ struct LcpNewtonStats {
   double residual = 0.0;           // last LCP: natural-map residual
   double fischer_burmeister = 0.0;
   double scale = 0.0;              // last LCP: max |b|
+  std::size_t rescaled = 0;        // Lemke solves repeated on the Jacobi-scaled LCP (inaccurate)
 };
 
 // One load step (the load factor and the boundary targets of lag already set). z and lambda (one
