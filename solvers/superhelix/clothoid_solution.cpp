@@ -7,6 +7,7 @@
 #include "rodvv/solvers/superhelix/clothoid_element.hpp"
 #include "rodvv/solvers/superhelix/clothoid_kinematics.hpp"
 #include "rodvv/solvers/superhelix/clothoid_statics.hpp"
+#include "rodvv/solvers/superhelix/solution.hpp"
 
 namespace rodvv::solvers::superhelix {
 
@@ -56,24 +57,9 @@ SpatialRodSolution make_clothoid_solution(const RodModel& model, const VecX& q, 
       r += R * local.r;
       R = R * local.R;
     }
-    const Vec3 u = a + sigma * b;
-    solution.s.push_back(s);
-    solution.position.push_back(r);
-    solution.frame.push_back(R);
-    solution.strain_u.push_back(u);
-    solution.strain_v.push_back(Vec3::UnitX());
-    solution.stiffness.push_back(model.stiffness);
-    solution.natural_strain.push_back(model.natural_strain);
-    solution.moment_m.push_back(R * model.stiffness.cwiseProduct(u - model.natural_strain));
-    solution.force_n.push_back(model.end_force + model.line_density * (model.length - s) * model.gravity);
-    solution.potential.push_back(-model.line_density * model.gravity.dot(r));
-    solution.shear_energy.push_back(0.0);
+    append_station(solution, model, s, r, R, a + sigma * b, model.natural_strain);
   }
-  for (std::size_t i = 0; i <= n; ++i) {
-    solution.vertex_s.push_back(static_cast<double>(i) * ell);
-    solution.vertex_position.push_back(kinematics.base_position(i));
-    solution.vertex_frame.push_back(kinematics.base_frame(i));
-  }
+  append_vertices(solution, kinematics, n, ell);
   return solution;
 }
 

@@ -17,24 +17,25 @@ SpatialRodSolution make_solution(const RodModel& model, const VecX& q, std::stri
     const Vec3 u = q.segment<3>(3 * e), u_hat = natural_strain(model, e);
     const Mat3 R = kinematics.frame(e, 0.5 * ell);
     const Vec3 r = kinematics.position(e, 0.5 * ell);
-    solution.s.push_back(s);
-    solution.position.push_back(r);
-    solution.frame.push_back(R);
-    solution.strain_u.push_back(u);
-    solution.strain_v.push_back(Vec3::UnitX());
-    solution.stiffness.push_back(model.stiffness);
-    solution.natural_strain.push_back(u_hat);
-    solution.moment_m.push_back(R * model.stiffness.cwiseProduct(u - u_hat));
-    solution.force_n.push_back(model.end_force + model.line_density * (model.length - s) * model.gravity);
-    solution.potential.push_back(-model.line_density * model.gravity.dot(r));
-    solution.shear_energy.push_back(0.0);
+    append_station(solution, model, s, r, R, u, u_hat);
   }
-  for (std::size_t i = 0; i <= n; ++i) {
-    solution.vertex_s.push_back(static_cast<double>(i) * ell);
-    solution.vertex_position.push_back(kinematics.base_position(i));
-    solution.vertex_frame.push_back(kinematics.base_frame(i));
-  }
+  append_vertices(solution, kinematics, n, ell);
   return solution;
+}
+
+void append_station(SpatialRodSolution& solution, const RodModel& model, double s, const Vec3& r, const Mat3& R,
+                    const Vec3& u, const Vec3& u_hat) {
+  solution.s.push_back(s);
+  solution.position.push_back(r);
+  solution.frame.push_back(R);
+  solution.strain_u.push_back(u);
+  solution.strain_v.push_back(Vec3::UnitX());
+  solution.stiffness.push_back(model.stiffness);
+  solution.natural_strain.push_back(u_hat);
+  solution.moment_m.push_back(R * model.stiffness.cwiseProduct(u - u_hat));
+  solution.force_n.push_back(model.end_force + model.line_density * (model.length - s) * model.gravity);
+  solution.potential.push_back(-model.line_density * model.gravity.dot(r));
+  solution.shear_energy.push_back(0.0);
 }
 
 }  // namespace rodvv::solvers::superhelix

@@ -5,13 +5,30 @@
 //   u = q_Q, v = e0, m = R K (q_Q - q0_Q) (constitutive law), n from force balance n' + f = 0 with
 //   the dead loads, n(s) = F_end + rho S g (L - s), V = -rho S g . r;
 //   vertices: the N + 1 element ends.
+#include <cstddef>
 #include <string>
 
+#include "rodvv/common/eigen_types.hpp"
 #include "rodvv/common/spatial_rod.hpp"
 #include "rodvv/solvers/superhelix/model.hpp"
 
 namespace rodvv::solvers::superhelix {
 
 SpatialRodSolution make_solution(const RodModel& model, const VecX& q, std::string method = "super-helix");
+
+// Shared by make_solution and make_clothoid_solution (clothoid_solution.hpp).
+// One station of an inextensible, unshearable rod under the model's dead loads: pose (r, R), strain
+// u (v = e0), m = R K (u - u_hat), n(s) = F_end + rho S g (L - s), V = -rho S g . r, no shear energy.
+void append_station(SpatialRodSolution& solution, const RodModel& model, double s, const Vec3& r, const Mat3& R,
+                    const Vec3& u, const Vec3& u_hat);
+// The N + 1 element ends as vertices, from any kinematics offering base_position(i) and base_frame(i).
+template <class Kinematics>
+void append_vertices(SpatialRodSolution& solution, const Kinematics& kinematics, std::size_t elements, double ell) {
+  for (std::size_t i = 0; i <= elements; ++i) {
+    solution.vertex_s.push_back(static_cast<double>(i) * ell);
+    solution.vertex_position.push_back(kinematics.base_position(i));
+    solution.vertex_frame.push_back(kinematics.base_frame(i));
+  }
+}
 
 }  // namespace rodvv::solvers::superhelix
