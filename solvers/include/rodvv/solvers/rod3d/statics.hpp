@@ -1,0 +1,53 @@
+#pragma once
+// Static equilibrium of the discrete elastic rod (model.hpp, discrete_energy.hpp): Newton on the
+// residual r(z) = 0 with the exact banded Jacobian, factorised by a banded LU with partial pivoting
+// (O(N) per iteration; the KKT matrix of an inextensible rod is symmetric indefinite, and a dead
+// tip moment makes it unsymmetric), a backtracking line search on the scaled residual, and
+// continuation.
+//
+// Continuation: the loads (gravity, tip force, tip moment) are scaled by lambda, and the supported
+// ends are moved from where `initial` has them to where the model puts them (positions linearly, end
+// tangents by a rotation about their common normal, held material angles linearly, so an imposed
+// end rotation of many turns is followed turn by turn), lambda going from 0 to 1 in `load_steps`
+// steps. A step whose Newton iteration fails is halved (at most `max_halvings` times in a row);
+// a step that converges lets the next one grow by 1.5 (never beyond 1 / load_steps).
+//
+// The angle held at an end: a clamped end's material frame is model.<end>.frame turned by
+// model.<end>.rotation about its tangent; a pinned end with hold_twist holds its material angle at
+// model.<end>.rotation, measured from the reference director parallel-transported along the rod.
+//
+// Convergence: every row of r below `tolerance` times its scale - forces: the largest of EI/L^2,
+// |F|, |M|/L, rho S |g| L and the largest edge tension; moments: that times L; constraint rows: L -
+// or a Newton step at round-off (|dz|_inf <= 64 eps L). Failure: rodvv::SolverError naming
+// "rod3d statics", the load factor reached, iterations and residual.
+#include <cstddef>
+
+#include "rodvv/solvers/rod3d/model.hpp"
+#include "rodvv/solvers/rod3d/state.hpp"
+
+namespace rodvv::solvers::rod3d {
+
+struct StaticOptions {
+  std::size_t load_steps = 1;        // >= 1
+  std::size_t max_iterations = 60;   // per continuation step, >= 1
+  double tolerance = 1e-10;          // relative, in (0, 1)
+  std::size_t max_halvings = 16;     // of one continuation step
+};
+
+struct StaticResult {
+  RodState state;
+  std::size_t iterations = 0;  // Newton iterations, all steps
+  std::size_t steps = 0;       // continuation steps taken (accepted)
+  double residual = 0.0;       // final scaled residual (max over rows)
+};
+
+// `initial` must have the model's element count (make_straight_state(model) is the usual start).
+StaticResult solve_static(const RodModel& model, const RodState& initial, const StaticOptions& options = {});
+
+// The scaled residual measure of the convergence test above (max over free rows).
+double scaled_residual(const RodModel& model, const RodState& state, double load_factor);
+
+// Indices (DofLayout) of the degrees of freedom the supports hold.
+std::vector<std::size_t> held_dofs(const RodModel& model);
+
+}  // namespace rodvv::solvers::rod3d

@@ -1,0 +1,67 @@
+#include "rodvv/solvers/rod3d/model.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <Eigen/Geometry>
+
+#include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
+
+namespace rodvv::solvers::rod3d {
+
+namespace {
+
+void require_finite_vector(const std::string& name, const Vec3& v) {
+  for (int i = 0; i < 3; ++i) require_finite(name + "[" + std::to_string(i) + "]", v[i]);
+}
+
+// A rotation to 1e-10 (a frame computed in double precision, not a guess).
+void require_rotation(const std::string& name, const Mat3& frame) {
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) require_finite(name, frame(i, k));
+  const double orthogonality = (frame.transpose() * frame - Mat3::Identity()).cwiseAbs().maxCoeff();
+  if (orthogonality > 1e-10 || std::abs(frame.determinant() - 1.0) > 1e-10)
+    throw InputError(name, "invalid parameter '" + name +
+                               "': must be a rotation matrix (orthonormal columns, det +1, to 1e-10)");
+}
+
+void validate_end(const std::string& name, const EndCondition& end) {
+  if (end.support == EndSupport::Free) return;
+  require_finite_vector(name + ".position", end.position);
+  require_rotation(name + ".frame", end.frame);
+  require_finite(name + ".rotation", end.rotation);
+  if (std::abs(end.rotation) > kMaxEndRotation)
+    throw InputError(name + ".rotation", "invalid parameter '" + name + ".rotation' = " + format_value(end.rotation) +
+                                             ": must lie in [-" + format_value(kMaxEndRotation) + ", " +
+                                             format_value(kMaxEndRotation) + "] rad (1000 turns)");
+}
+
+}  // namespace
+
+void validate(const RodModel& model) {
+  require_at_least("elements", model.elements, 2);
+  require_positive("length", model.length);
+  require_positive("stiffness.twist (GJ)", model.stiffness[0]);
+  require_positive("stiffness.bending1 (EI1)", model.stiffness[1]);
+  require_positive("stiffness.bending2 (EI2)", model.stiffness[2]);
+  require_finite_vector("natural_strain", model.natural_strain);
+  if (!is_inextensible(model)) require_positive("extensional_stiffness (EA, or +inf)", model.extensional_stiffness);
+  require_positive("line_density", model.line_density);
+  require_non_negative("twist_inertia", model.twist_inertia);
+  require_finite_vector("gravity", model.gravity);
+  require_finite_vector("end_force", model.end_force);
+  require_finite_vector("end_moment", model.end_moment);
+  validate_end("root", model.root);
+  validate_end("tip", model.tip);
+  if (model.tip.support == EndSupport::Clamped && model.root.support == EndSupport::Clamped)
+    require_at_least("elements (both ends clamped)", model.elements, 3);
+  if (is_inextensible(model) && model.root.support != EndSupport::Free && model.tip.support != EndSupport::Free &&
+      !((model.tip.position - model.root.position).norm() < model.length))
+    throw InputError("tip.position", "invalid parameter 'tip.position': the supported ends are " +
+                                         format_value((model.tip.position - model.root.position).norm()) +
+                                         " apart, the inextensible rod between them is " + format_value(model.length) +
+                                         " long (must be farther)");
+}
+
+}  // namespace rodvv::solvers::rod3d

@@ -1,0 +1,284 @@
+#include "rodvv/solvers/rod3d/statics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
+#include "rodvv/solvers/elastica2d/banded_lu.hpp"
+#include "rodvv/solvers/rod3d/discrete_energy.hpp"
+
+namespace rodvv::solvers::rod3d {
+
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+const std::string kMethod = "rod3d statics (Newton, banded LU, continuation)";
+
+// Where one supported end goes during continuation: from the initial state's pose (lambda = 0) to
+// the model's (lambda = 1).
+struct EndPath {
+  bool active = false;
+  bool clamped = false;
+  bool holds_angle = false;
+  std::size_t vertex = 0, inner = 0, edge = 0;  // end vertex, the other vertex of the end edge, the edge
+  double sign = 1.0;                            // +1: t points from inner to vertex (tip), -1 (root)
+  Vec3 position_start, position_end;
+  Vec3 tangent_start;
+  Vec3 rotation_axis = Vec3::UnitX();
+  double rotation_angle = 0.0;                  // of the end tangent, about rotation_axis
+  double angle_start = 0.0, angle_end = 0.0;
+
+  Vec3 position(double lambda) const { return position_start + lambda * (position_end - position_start); }
+  Vec3 tangent(double lambda) const {
+    return Eigen::AngleAxisd(lambda * rotation_angle, rotation_axis) * tangent_start;
+  }
+  double angle(double lambda) const { return angle_start + lambda * (angle_end - angle_start); }
+};
+
+EndPath make_path(const EndCondition& end, const RodState& state, bool at_tip) {
+  EndPath path;
+  if (end.support == EndSupport::Free) return path;
+  const std::size_t n = state.elements();
+  path.active = true;
+  path.clamped = end.support == EndSupport::Clamped;
+  path.holds_angle = path.clamped || end.hold_twist;
+  path.vertex = at_tip ? n : 0;
+  path.inner = at_tip ? n - 1 : 1;
+  path.edge = at_tip ? n - 1 : 0;
+  path.sign = at_tip ? 1.0 : -1.0;
+  // A clamped end is placed by its support point, the midpoint of the clamped edge (model.hpp).
+  path.position_start = path.clamped ? 0.5 * (state.position[path.vertex] + state.position[path.inner])
+                                     : state.position[path.vertex];
+  path.position_end = end.position;
+  path.tangent_start = edge_tangent(state, path.edge);
+  path.angle_start = state.angle[path.edge];
+  Vec3 reference_end = state.reference_director[path.edge];
+  if (path.clamped) {
+    const Vec3 target = end.frame.col(0);
+    const Vec3 normal = path.tangent_start.cross(target);
+    path.rotation_angle = std::atan2(normal.norm(), path.tangent_start.dot(target));
+    if (normal.norm() > 1e-14) {
+      path.rotation_axis = normal.normalized();
+    } else if (path.rotation_angle > 1.0) {  // antiparallel: any axis normal to the tangent
+      path.rotation_axis = state.reference_director[path.edge];
+    }
+    reference_end = parallel_transport(path.tangent_start, target, reference_end);
+    path.angle_end = signed_angle(reference_end, end.frame.col(1), target) + end.rotation;
+  } else if (end.hold_twist) {
+    path.angle_end = end.rotation;
+  } else {
+    path.angle_end = path.angle_start;
+  }
+  return path;
+}
+
+// Puts the held degrees of freedom of `state` where the paths have them at lambda.
+void place_ends(const RodModel& model, RodState& state, const EndPath& root, const EndPath& tip, double lambda) {
+  const auto previous = edge_tangents(state);
+  const double ell = rest_edge_length(model);
+  for (const EndPath* path : {&root, &tip}) {
+    if (!path->active) continue;
+    if (path->clamped) {
+      const Vec3 half_edge = 0.5 * path->sign * ell * path->tangent(lambda);
+      state.position[path->vertex] = path->position(lambda) + half_edge;
+      state.position[path->inner] = path->position(lambda) - half_edge;
+    } else {
+      state.position[path->vertex] = path->position(lambda);
+    }
+  }
+  transport_reference_frames(state, previous);
+  for (const EndPath* path : {&root, &tip})
+    if (path->active && path->holds_angle) state.angle[path->edge] = path->angle(lambda);
+}
+
+struct Scales {
+  double force = 1.0, moment = 1.0, length = 1.0;
+};
+
+Scales residual_scales(const RodModel& model, const RodState& state, double load_factor) {
+  Scales s;
+  const double L = model.length;
+  double force = model.stiffness.maxCoeff() / (L * L);
+  force = std::max(force, load_factor * model.end_force.norm());
+  force = std::max(force, load_factor * model.end_moment.norm() / L);
+  force = std::max(force, load_factor * model.line_density * model.gravity.norm() * L);
+  for (double tension : state.multiplier) force = std::max(force, std::abs(tension));
+  s.force = force;
+  s.moment = force * L;
+  s.length = L;
+  return s;
+}
+
+std::vector<char> held_mask(const RodModel& model) {
+  const DofLayout layout(model);
+  std::vector<char> held(layout.size(), 0);
+  for (std::size_t k : held_dofs(model)) held[k] = 1;
+  return held;
+}
+
+double scaled_measure(const RodModel& model, const VecX& r, const Scales& scales, const std::vector<char>& held) {
+  const DofLayout layout(model);
+  double worst = 0.0;
+  for (std::size_t k = 0; k < layout.size(); ++k) {
+    if (held[k]) continue;
+    const std::size_t slot = k % layout.stride();
+    const double scale = (k >= layout.size() - 3 || slot < 3) ? scales.force : slot == 3 ? scales.moment : scales.length;
+    worst = std::max(worst, std::abs(r[Eigen::Index(k)]) / scale);
+  }
+  return worst;
+}
+
+struct NewtonOutcome {
+  bool converged = false;
+  std::size_t iterations = 0;
+  double residual = std::numeric_limits<double>::infinity();
+};
+
+// Newton at a fixed load factor with the held dofs already in place.
+NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, const StaticOptions& options,
+                     const std::vector<char>& held) {
+  NewtonOutcome outcome;
+  VecX r;
+  Eigen::SparseMatrix<double> jacobian;
+  elastica2d::BandedLU lu;
+  const double step_floor = 64.0 * kEps * model.length;
+  for (std::size_t it = 0; it < options.max_iterations; ++it) {
+    static_system(model, state, lambda, r, jacobian);
+    for (std::size_t k = 0; k < held.size(); ++k)
+      if (held[k]) r[Eigen::Index(k)] = 0.0;
+    const Scales scales = residual_scales(model, state, lambda);
+    outcome.residual = scaled_measure(model, r, scales, held);
+    if (!std::isfinite(outcome.residual)) return outcome;
+    if (outcome.residual <= options.tolerance) {
+      outcome.converged = true;
+      return outcome;
+    }
+    jacobian.prune([&](Eigen::Index row, Eigen::Index, double) { return !held[std::size_t(row)]; });
+    for (std::size_t k = 0; k < held.size(); ++k)
+      if (held[k]) jacobian.coeffRef(Eigen::Index(k), Eigen::Index(k)) = 1.0;
+    if (!lu.factorize(jacobian)) return outcome;
+    const VecX dz = -lu.solve(r);
+    if (!dz.allFinite()) return outcome;
+    ++outcome.iterations;
+    // Backtracking on the scaled residual (Armijo 1e-4); a step may turn no reference twist by more
+    // than pi/4 (the energy's local chart, discrete_energy.cpp).
+    double alpha = 1.0;
+    bool accepted = false;
+    for (int halving = 0; halving < 30; ++halving, alpha *= 0.5) {
+      double twist_change = 0.0;
+      RodState trial = displaced(model, state, alpha * dz, &twist_change);
+      if (twist_change > 0.25 * std::numbers::pi) continue;
+      VecX r_trial = static_residual(model, trial, lambda);
+      for (std::size_t k = 0; k < held.size(); ++k)
+        if (held[k]) r_trial[Eigen::Index(k)] = 0.0;
+      const double measure = scaled_measure(model, r_trial, residual_scales(model, trial, lambda), held);
+      if (std::isfinite(measure) && measure <= (1.0 - 1e-4 * alpha) * outcome.residual) {
+        state = std::move(trial);
+        accepted = true;
+        break;
+      }
+    }
+    const double step = alpha * dz.cwiseAbs().maxCoeff();
+    if (!accepted) {
+      // No decrease: converged at round-off if the full step is already at the round-off floor.
+      if (dz.cwiseAbs().maxCoeff() <= step_floor) outcome.converged = true;
+      return outcome;
+    }
+    if (step <= step_floor) {
+      outcome.converged = true;
+      return outcome;
+    }
+  }
+  return outcome;
+}
+
+void validate_options(const StaticOptions& options) {
+  require_at_least("load_steps", options.load_steps, 1);
+  require_at_least("max_iterations", options.max_iterations, 1);
+  require_open_interval("tolerance", options.tolerance, 0.0, 1.0);
+}
+
+}  // namespace
+
+std::vector<std::size_t> held_dofs(const RodModel& model) {
+  const DofLayout layout(model);
+  std::vector<std::size_t> held;
+  const auto hold_vertex = [&](std::size_t i) {
+    for (std::size_t k = 0; k < 3; ++k) held.push_back(layout.vertex(i) + k);
+  };
+  const auto hold_end = [&](const EndCondition& end, std::size_t vertex, std::size_t inner, std::size_t edge) {
+    if (end.support == EndSupport::Free) return;
+    hold_vertex(vertex);
+    // A clamped end edge lies in the clamp: its inextensibility multiplier acts on held vertices only
+    // and is part of the support's reaction, so it is held too (else the KKT matrix is singular).
+    if (end.support == EndSupport::Clamped) {
+      hold_vertex(inner);
+      if (layout.multipliers) held.push_back(layout.multiplier(edge));
+    }
+    if (end.support == EndSupport::Clamped || end.hold_twist) held.push_back(layout.angle(edge));
+  };
+  hold_end(model.root, 0, 1, 0);
+  hold_end(model.tip, model.elements, model.elements - 1, model.elements - 1);
+  std::sort(held.begin(), held.end());
+  held.erase(std::unique(held.begin(), held.end()), held.end());
+  return held;
+}
+
+double scaled_residual(const RodModel& model, const RodState& state, double load_factor) {
+  VecX r = static_residual(model, state, load_factor);
+  const auto held = held_mask(model);
+  return scaled_measure(model, r, residual_scales(model, state, load_factor), held);
+}
+
+StaticResult solve_static(const RodModel& model, const RodState& initial, const StaticOptions& options) {
+  validate(model);
+  validate_options(options);
+  if (initial.elements() != model.elements)
+    throw InputError("initial", "invalid parameter 'initial': the state has " + std::to_string(initial.elements()) +
+                                    " elements, the model " + std::to_string(model.elements));
+  const auto held = held_mask(model);
+  const EndPath root = make_path(model.root, initial, false);
+  const EndPath tip = make_path(model.tip, initial, true);
+
+  StaticResult result;
+  result.state = initial;
+  if (is_inextensible(model) && result.state.multiplier.size() != model.elements)
+    result.state.multiplier.assign(model.elements, 0.0);
+  const double max_step = 1.0 / double(options.load_steps);
+  double lambda = 0.0, step = max_step;
+  std::size_t halvings = 0;
+  double last_residual = 0.0;
+  while (lambda < 1.0) {
+    const double target = std::min(1.0, lambda + step);
+    RodState trial = result.state;
+    place_ends(model, trial, root, tip, target);
+    const NewtonOutcome outcome = newton(model, trial, target, options, held);
+    result.iterations += outcome.iterations;
+    last_residual = outcome.residual;
+    if (outcome.converged) {
+      result.state = std::move(trial);
+      lambda = target;
+      ++result.steps;
+      halvings = 0;
+      step = std::min(max_step, 1.5 * step);
+      continue;
+    }
+    if (++halvings > options.max_halvings)
+      throw SolverError(kMethod,
+                        "no equilibrium found beyond load factor " + format_value(lambda) + " (step " +
+                            format_value(step) + " halved " + std::to_string(options.max_halvings) + " times)",
+                        result.iterations, last_residual);
+    step *= 0.5;
+  }
+  result.residual = last_residual;
+  return result;
+}
+
+}  // namespace rodvv::solvers::rod3d
