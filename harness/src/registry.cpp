@@ -61,6 +61,7 @@ const Registry& default_registry() {
     register_buckling_cases(r);
     register_contact_cases(r);
     register_sleeve_cases(r);
+    register_rod3d_cases(r);
     return r;
   }();
   return registry;

@@ -305,8 +305,13 @@ VecX static_residual(const RodModel& model, const RodState& state, double load_f
 
 void static_system(const RodModel& model, const RodState& state, double load_factor, VecX& residual,
                    Eigen::SparseMatrix<double>& jacobian) {
+  chart_system(model, state, VecX(), load_factor, residual, jacobian);
+}
+
+void chart_system(const RodModel& model, const RodState& base, const VecX& dz, double load_factor, VecX& residual,
+                  Eigen::SparseMatrix<double>& jacobian) {
   validate(model);
-  const Context c(model, state);
+  const Context c(model, base, dz.size() ? &dz : nullptr);
   Triplets triplets;
   triplets.reserve(model.elements * (kStencil * kStencil + 40));
   assemble(c, load_factor, residual, &triplets);

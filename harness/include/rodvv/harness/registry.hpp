@@ -36,5 +36,6 @@ void register_superhelix_cases(Registry& registry);  // superhelix/*: 3-D Super-
 void register_buckling_cases(Registry& registry);  // elastica/euler-*: Euler loads, eigenproblem
 void register_contact_cases(Registry& registry);  // elastica-contact/*: cavity, soft walls, prop
 void register_sleeve_cases(Registry& registry);  // sleeve/*: Eshelby-like force, elastica arm scale
+void register_rod3d_cases(Registry& registry);   // rod3d/*: the nodal 3-D rod (discrete elastic rod)
 
 }  // namespace rodvv::harness

@@ -54,6 +54,9 @@ VecX chart_residual(const RodModel& model, const RodState& base, const VecX& dz,
 // Residual and its Jacobian d r / d z at z = the state (z in DofLayout order).
 void static_system(const RodModel& model, const RodState& state, double load_factor, VecX& residual,
                    Eigen::SparseMatrix<double>& jacobian);
+// The same at base + dz in the chart of `base` (dz empty: at base): Newton iterates in one chart.
+void chart_system(const RodModel& model, const RodState& base, const VecX& dz, double load_factor, VecX& residual,
+                  Eigen::SparseMatrix<double>& jacobian);
 
 // The state displaced by dz (DofLayout order): positions and angles moved, multipliers replaced by
 // lambda + dlambda, reference frames transported to the new tangents. largest_twist_change (optional)

@@ -1,0 +1,82 @@
+#include "case_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "rodvv/harness/trajectory_metrics.hpp"
+#include "rodvv/invariants/noether3d.hpp"
+
+namespace rodvv::harness::cases {
+
+MetricSample error_sample(double computed, double reference) { return {computed, reference, std::abs(computed - reference)}; }
+MetricSample value_sample(double value) { return {value, 0.0, std::abs(value)}; }
+MetricSample diagnostic(double value) { return {value, std::nullopt, std::nullopt}; }
+
+MetricSpec error_metric(std::string name, std::string unit, std::string description, std::optional<double> order,
+                        bool extrapolate) {
+  return {std::move(name), MetricKind::Error, std::move(unit), std::move(description), extrapolate, order};
+}
+MetricSpec invariant_metric(std::string name, std::string description, std::optional<double> order) {
+  return {std::move(name), MetricKind::Invariant, "", std::move(description), false, order};
+}
+MetricSpec diagnostic_metric(std::string name, std::string description) {
+  return {std::move(name), MetricKind::Diagnostic, "", std::move(description), false, std::nullopt};
+}
+
+Resolution element_levels(std::string description, std::vector<double> levels, std::vector<double> extended) {
+  return {"N", std::move(description), ResolutionScale::Count, std::move(levels), std::move(extended)};
+}
+
+std::size_t element_count(double level) { return static_cast<std::size_t>(std::llround(level)); }
+
+GateSpec measured_bound(const std::string& metric, double at_finest, double h_finest, double order) {
+  GateSpec gate = scaled_upper_bound_gate(metric, 2.0 * at_finest / std::pow(h_finest, order), order,
+                                          GateScope::FinestLevel,
+                                          fmt::format("C = 2 x the value measured at the finest default level / h^{:g}", order));
+  gate.measured = true;
+  return gate;
+}
+
+Case make_case(std::string family, CaseText text, Parameters parameters, Resolution resolution,
+               std::vector<MetricSpec> metrics, std::vector<GateSpec> gates, LevelRunner runner) {
+  Case c;
+  c.info.name = std::move(text.name);
+  c.info.family = std::move(family);
+  c.info.group = c.info.name;
+  c.info.title = std::move(text.title);
+  c.info.physics = std::move(text.physics);
+  c.info.reference = std::move(text.reference);
+  c.info.citation = std::move(text.citation);
+  c.info.method = std::move(text.method);
+  c.info.parameters = std::move(parameters);
+  c.info.resolution = std::move(resolution);
+  c.info.metrics = std::move(metrics);
+  c.gates = std::move(gates);
+  c.run_level = std::move(runner);
+  return c;
+}
+
+void add_noether3d_metrics(LevelOutput& output, const SpatialRodSolution& solution, std::optional<double> exact) {
+  const auto summary = invariants::noether3d_summary(solution);
+  const double scale = std::max(summary.scale, 1e-300);
+  output.metrics["H_spread"] = value_sample(summary.spread / scale);
+  output.metrics["H_form_difference"] = value_sample(summary.form_difference / scale);
+  if (exact)
+    output.metrics["H_mean"] = {summary.mean, *exact, std::abs(summary.mean - *exact) / std::max(std::abs(*exact), scale)};
+  output.series.push_back(thin_series("H(s)|compact", "s", "H", solution.s, invariants::noether3d_compact(solution)));
+  output.series.push_back(thin_series("H(s)|flattened", "s", "H", solution.s, invariants::noether3d_flattened(solution)));
+}
+
+std::vector<MetricSpec> noether3d_metric_specs(bool exact, std::optional<double> spread_order,
+                                               std::optional<double> mean_order) {
+  std::vector<MetricSpec> specs{
+      invariant_metric("H_spread", "max |H(s) - mean H| / term scale at the stations", spread_order),
+      invariant_metric("H_form_difference", "max |H_compact - H_flattened| / term scale (round-off)")};
+  if (exact)
+    specs.push_back(error_metric("H_mean", "force", "|mean H - closed form| / max(|H|, term scale)", mean_order));
+  return specs;
+}
+
+}  // namespace rodvv::harness::cases

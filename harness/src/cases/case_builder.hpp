@@ -1,0 +1,46 @@
+#pragma once
+// The one case builder of the families that live one problem per file under
+// harness/src/cases/<family>/ (ARCHITECTURE.md, convention 12): metric samples and specs, element
+// levels, measured bounds, the Case itself, and the 3-D Noether metrics every 3-D rod case reports.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rodvv/common/spatial_rod.hpp"
+#include "rodvv/harness/case.hpp"
+#include "rodvv/harness/parameters.hpp"
+
+namespace rodvv::harness::cases {
+
+// Samples: an error against a reference; a value whose ideal is 0 (gated on |value|); a diagnostic.
+MetricSample error_sample(double computed, double reference);
+MetricSample value_sample(double value);
+MetricSample diagnostic(double value);
+
+MetricSpec error_metric(std::string name, std::string unit, std::string description, std::optional<double> order,
+                        bool extrapolate = false);
+MetricSpec invariant_metric(std::string name, std::string description, std::optional<double> order = std::nullopt);
+MetricSpec diagnostic_metric(std::string name, std::string description);
+
+// A sweep over the element count N (h = 1 / N).
+Resolution element_levels(std::string description, std::vector<double> levels, std::vector<double> extended);
+std::size_t element_count(double level);
+
+// value <= C h^order with C = 2 x the value measured at the finest default level (h_finest): a
+// regression of the error constant by more than 2x turns red; skipped at non-default parameters.
+GateSpec measured_bound(const std::string& metric, double at_finest, double h_finest, double order);
+
+struct CaseText {
+  std::string name, title, physics, reference, citation, method;
+};
+Case make_case(std::string family, CaseText text, Parameters parameters, Resolution resolution,
+               std::vector<MetricSpec> metrics, std::vector<GateSpec> gates, LevelRunner runner);
+
+// The 3-D Noether invariant of a solution (invariants/noether3d.hpp): H_spread (max |H - mean| /
+// term scale), H_form_difference (compact vs flattened / term scale) and, with a closed form,
+// H_mean (|mean - exact| / max(|exact|, term scale)); plus the H(s) series of both forms.
+void add_noether3d_metrics(LevelOutput& output, const SpatialRodSolution& solution, std::optional<double> exact);
+std::vector<MetricSpec> noether3d_metric_specs(bool exact, std::optional<double> spread_order,
+                                               std::optional<double> mean_order = std::nullopt);
+
+}  // namespace rodvv::harness::cases

@@ -1,0 +1,15 @@
+#pragma once
+// The rod3d family: the nodal 3-D rod (solvers/rod3d, a discrete elastic rod), one problem per file.
+// Each add_* registers one case (or the cases of one problem) with the shared case builder.
+#include "rodvv/harness/registry.hpp"
+
+namespace rodvv::harness::rod3d_cases {
+
+// The method description every rod3d case carries.
+extern const char* const kMethod;
+
+void add_helix_axial_wrench(Registry& registry);  // uniform helix held by an axial wrench
+void add_mattiasson(Registry& registry);          // Mattiasson cantilever in a tilted 3-D frame
+void add_roll_up(Registry& registry);             // end-moment roll-up in a tilted 3-D frame
+
+}  // namespace rodvv::harness::rod3d_cases

@@ -1,0 +1,106 @@
+// The rod3d static cases pass at their default levels, and their gates turn red on deliberately
+// wrong claims or a wrong reference: a second-order case claimed at order 4 or 1, a reference with
+// a perturbed stiffness, and a bending axis swapped (EI1 <-> EI2).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include <Eigen/Geometry>
+
+#include "case_test_support.hpp"
+#include "rodvv/references/elastica.hpp"
+#include "rodvv/solvers/rod3d/solution.hpp"
+#include "rodvv/solvers/rod3d/statics.hpp"
+
+namespace {
+
+using namespace rodvv::harness;
+using rodvv::testing::failing_gates;
+using rodvv::testing::run_at_default_levels;
+namespace rod = rodvv::solvers::rod3d;
+using rodvv::Vec3;
+
+const Case& named(const std::string& name) { return rodvv::testing::named_case(name); }
+
+class Rod3dCase : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Rod3dCase, PassesAtDefaultLevels) {
+  const auto result = run_at_default_levels(named(GetParam()));
+  EXPECT_TRUE(result.passed()) << GetParam() << failing_gates(result);
+  EXPECT_FALSE(result.gates.empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(AllRod3dCases, Rod3dCase, ::testing::ValuesIn(rodvv::testing::case_names_of_family("rod3d")),
+                         [](const ::testing::TestParamInfo<std::string>& param_info) {
+                           return rodvv::testing::test_name_of_case(param_info.param);
+                         });
+
+TEST(Rod3dGatesHaveTeeth, SecondOrderClaimedAsFourthOrFirstFails) {
+  for (double claimed : {4.0, 1.0}) {
+    Case wrong = named("rod3d/mattiasson-2");
+    wrong.gates = {order_gate("tip_w", claimed, "wrong claim")};
+    EXPECT_FALSE(run_at_default_levels(wrong).passed()) << claimed;
+    Case helix = named("rod3d/helix-axial-wrench");
+    helix.gates = {order_gate("shape_max_error", claimed, "wrong claim")};
+    EXPECT_FALSE(run_at_default_levels(helix).passed()) << claimed;
+  }
+}
+
+// A case whose bound gates were set at 2 x the measured error constant fails when the error grows
+// by a factor 3: the magnitude gates see what the order gates cannot.
+TEST(Rod3dGatesHaveTeeth, TripledErrorFailsTheMagnitudeGate) {
+  Case wrong = named("rod3d/roll-up");
+  const LevelRunner original = wrong.run_level;
+  wrong.run_level = [original](const Parameters& p, double level) {
+    LevelOutput out = original(p, level);
+    auto& sample = out.metrics.at("shape_max_error");
+    *sample.error *= 3.0;
+    return out;
+  };
+  const auto result = run_at_default_levels(wrong);
+  EXPECT_FALSE(result.passed());
+}
+
+// The Mattiasson reference at a stiffness perturbed by 1e-3 is off by more than the bound at N = 128:
+// the comparison can see a wrong constant of that size.
+TEST(Rod3dGatesHaveTeeth, PerturbedStiffnessInTheReferenceIsSeen) {
+  rod::RodModel model;
+  model.elements = 128;
+  model.length = 1.3;
+  model.stiffness = Vec3(0.7, 1.0, 2.3) * 1.7;
+  model.root.support = rod::EndSupport::Clamped;
+  model.root.frame = Eigen::AngleAxisd(0.7, Vec3(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
+  const double P = 2.0 * 1.7 / (1.3 * 1.3);
+  model.end_force = P * model.root.frame.col(2);
+  rod::StaticOptions options;
+  options.load_steps = 2;
+  options.tolerance = 1e-12;
+  const auto solution = rod::make_solution(model, rod::solve_static(model, rod::make_straight_state(model), options).state);
+  const double w = (solution.vertex_position.back() - model.root.position).dot(model.root.frame.col(2));
+  const double right = rodvv::references::cantilever_tip({1.3, 1.7, P}).w;
+  const double wrong = rodvv::references::cantilever_tip({1.3, 1.7 * 1.001, P}).w;
+  const double bound = 2.0 * 2.5216e-5;  // the case's measured bound at N = 128
+  EXPECT_LT(std::abs(w - right), bound);
+  EXPECT_GT(std::abs(w - wrong), bound);
+}
+
+// Swapping the bending stiffnesses (the load then bends the rod about its stiff axis) moves the tip
+// by far more than the discretisation error: a bending-axis index mistake cannot pass.
+TEST(Rod3dGatesHaveTeeth, SwappedBendingAxesAreSeen) {
+  rod::RodModel model;
+  model.elements = 64;
+  model.length = 1.3;
+  model.stiffness = Vec3(0.7, 2.3, 1.0) * 1.7;  // EI1 <-> EI2 swapped against the case
+  model.root.support = rod::EndSupport::Clamped;
+  model.root.frame = Eigen::AngleAxisd(0.7, Vec3(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
+  const double P = 2.0 * 1.7 / (1.3 * 1.3);
+  model.end_force = P * model.root.frame.col(2);
+  rod::StaticOptions options;
+  options.load_steps = 2;
+  const auto solution = rod::make_solution(model, rod::solve_static(model, rod::make_straight_state(model), options).state);
+  const double w = (solution.vertex_position.back() - model.root.position).dot(model.root.frame.col(2));
+  EXPECT_GT(std::abs(w - rodvv::references::cantilever_tip({1.3, 1.7, P}).w), 100 * 1.0161e-4);
+}
+
+}  // namespace
