@@ -14,6 +14,7 @@ void register_rod3d_cases(Registry& registry) {
   rod3d_cases::add_helix_axial_wrench(registry);
   rod3d_cases::add_mattiasson(registry);
   rod3d_cases::add_roll_up(registry);
+  rod3d_cases::add_helical_buckling(registry);
 }
 
 }  // namespace rodvv::harness

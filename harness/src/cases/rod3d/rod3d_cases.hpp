@@ -11,5 +11,6 @@ extern const char* const kMethod;
 void add_helix_axial_wrench(Registry& registry);  // uniform helix held by an axial wrench
 void add_mattiasson(Registry& registry);          // Mattiasson cantilever in a tilted 3-D frame
 void add_roll_up(Registry& registry);             // end-moment roll-up in a tilted 3-D frame
+void add_helical_buckling(Registry& registry);    // localized helical buckling (PyElastica's case)
 
 }  // namespace rodvv::harness::rod3d_cases

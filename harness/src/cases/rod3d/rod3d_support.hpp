@@ -2,6 +2,7 @@
 // What the rod3d case files share beyond the case builder: a general tilted frame (so that no case
 // lives in coordinate planes) and a rod state laid on a given curve with given material frames.
 #include <functional>
+#include <vector>
 
 #include <Eigen/Geometry>
 
