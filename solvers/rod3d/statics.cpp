@@ -140,12 +140,18 @@ double scaled_measure(const RodModel& model, const VecX& r, const Scales& scales
 // curvature (a cross product of nearly parallel tangents) then has an absolute error ~ eps |x| N / L,
 // and the vertex force K kappa_err / ebar^2 relative to the force scale K / L^2 grows like
 // N^3 eps |x| / L. Measured on the Mattiasson cantilever: 1.1 N^3 eps at N = 128, 1.4 N^3 eps at
-// N = 512; the floor is set at 8 N^3 eps max(1, |x|_max / L).
-double round_off_floor(const RodModel& model, const RodState& state) {
+// N = 512; the floor is set at 8 N^3 eps max(1, |x|_max / L). An extensible rod adds the error of
+// its edge tension EA (|e|/ebar - 1): EA eps |x| / ebar, relative to the force scale (measured
+// 1.5e-10 on the Bathe-Bolourchi bend at N = 16, EA = 1e7, |x| = 100; this term gives 1.2e-10 there
+// before the factor 8).
+double round_off_floor(const RodModel& model, const RodState& state, double force_scale) {
   double extent = model.length;
   for (const Vec3& x : state.position) extent = std::max(extent, x.cwiseAbs().maxCoeff());
   const double n = double(model.elements);
-  return 8.0 * kEps * n * n * n * extent / model.length;
+  double floor = 8.0 * kEps * n * n * n * extent / model.length;
+  if (!is_inextensible(model))
+    floor += 8.0 * kEps * model.extensional_stiffness * extent / rest_edge_length(model) / force_scale;
+  return floor;
 }
 
 struct NewtonOutcome {
@@ -173,7 +179,8 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
   for (std::size_t it = 0; it < options.max_iterations; ++it) {
     static_system(model, state, lambda, r, jacobian);
     zero_held(r);
-    outcome.residual = scaled_measure(model, r, residual_scales(model, state, lambda), held);
+    const Scales scales = residual_scales(model, state, lambda);
+    outcome.residual = scaled_measure(model, r, scales, held);
     if (!std::isfinite(outcome.residual)) return outcome;
     if (outcome.residual <= options.tolerance) {
       outcome.converged = true;
@@ -182,7 +189,7 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
     // At the round-off floor the residual cannot show further progress, but the iterate may still
     // carry the error of the last step (up to floor / stiffness): one more full Newton step, taken
     // without the line search, squares that error away.
-    const bool at_floor = outcome.residual <= round_off_floor(model, state);
+    const bool at_floor = outcome.residual <= round_off_floor(model, state, scales.force);
     jacobian.prune([&](Eigen::Index row, Eigen::Index, double) { return !held[std::size_t(row)]; });
     for (std::size_t k = 0; k < held.size(); ++k)
       if (held[k]) jacobian.coeffRef(Eigen::Index(k), Eigen::Index(k)) = 1.0;

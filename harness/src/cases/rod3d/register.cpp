@@ -15,6 +15,7 @@ void register_rod3d_cases(Registry& registry) {
   rod3d_cases::add_mattiasson(registry);
   rod3d_cases::add_roll_up(registry);
   rod3d_cases::add_helical_buckling(registry);
+  rod3d_cases::add_bathe_bolourchi(registry);
 }
 
 }  // namespace rodvv::harness

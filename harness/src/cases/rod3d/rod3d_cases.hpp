@@ -12,5 +12,6 @@ void add_helix_axial_wrench(Registry& registry);  // uniform helix held by an ax
 void add_mattiasson(Registry& registry);          // Mattiasson cantilever in a tilted 3-D frame
 void add_roll_up(Registry& registry);             // end-moment roll-up in a tilted 3-D frame
 void add_helical_buckling(Registry& registry);    // localized helical buckling (PyElastica's case)
+void add_bathe_bolourchi(Registry& registry);     // 45-degree bend, out-of-plane tip load
 
 }  // namespace rodvv::harness::rod3d_cases

@@ -16,9 +16,10 @@
 // model.<end>.rotation about its tangent; a pinned end with hold_twist holds its material angle at
 // model.<end>.rotation, measured from the reference director parallel-transported along the rod.
 //
-// Convergence: every row of r below max(tolerance, 8 N^3 eps max(1, |x|_max / L)) times its scale
-// (the second term is the round-off floor of the vertex forces of a nodal rod: edge vectors are
-// differences of positions, statics.cpp derives and measures it) - forces: the largest of EI/L^2,
+// Convergence: every row of r below max(tolerance, 8 N^3 eps max(1, |x|_max / L) [+ 8 eps EA |x| /
+// (ebar F) for an extensible rod]) times its scale (the second term is the round-off floor of the
+// vertex forces of a nodal rod, whose edge vectors are differences of positions; statics.cpp
+// derives and measures it) - forces: the largest of EI/L^2,
 // |F|, |M|/L, rho S |g| L and the largest edge tension; moments: that times L; constraint rows: L -
 // or a Newton step at round-off (|dz|_inf <= 64 eps L). Failure: rodvv::SolverError naming
 // "rod3d statics", the load factor reached, iterations and residual.
