@@ -4,13 +4,17 @@
 //    N = 1024).
 //  - BM_StepDense: the same step by dense assembly (O(N^3)) and LDL^T, N = 16 .. 256 (target: the
 //    recursive step at least 20x faster at N = 256).
+//  - BM_StepRecursiveTranslationalOnly: BM_StepRecursive without the cross-sections' rotational
+//    inertia (rotational_inertia = 0, the pre-issue-11 model): the cost of the rotational terms
+//    (measured: +32 % CPU time, 0.51 -> 0.68 ms at N = 1024, linear; machine shared with a build).
 //  - BM_StepRecursiveMovingRoot: the recursive step with a translating, spinning-up root (root_motion.hpp).
 //  - BM_ClothoidStepRecursive / BM_ClothoidStepDense: the super-clothoid step by the O(N) nodal-strain
 //    recursion (N = 16 .. 1024) and by dense assembly + LDL^T (N = 16 .. 256).
 //  - BM_Statics: the heavy-cantilever static solve (Newton with a finite-difference Jacobian), N = 8 .. 64.
 // The fit exponent over N = 16 .. 1024 (issue: <= 1.1) is the least-squares slope of log(cpu time)
 // against log N of the BM_StepRecursive rows (e.g. from --benchmark_format=json).
-// The state is a curved, moving rod under gravity (set up outside the timed loop).
+// The state is a curved, moving rod under gravity (set up outside the timed loop), with the model's
+// default rotational inertia (model.hpp) unless stated.
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
@@ -43,9 +47,10 @@ sh::DynamicState state_of(std::size_t n) {
   return state;
 }
 
-void step_benchmark(benchmark::State& bench, sh::DynamicsPath path) {
+void step_benchmark(benchmark::State& bench, sh::DynamicsPath path, bool rotational_inertia = true) {
   const auto n = static_cast<std::size_t>(bench.range(0));
-  const sh::RodModel model = model_of(n);
+  sh::RodModel model = model_of(n);
+  if (!rotational_inertia) model.rotational_inertia.setZero();
   const sh::DynamicState state = state_of(n);
   for (auto _ : bench) {
     const VecX dv = sh::velocity_change(model, state, 1e-3, path);
@@ -57,6 +62,9 @@ void step_benchmark(benchmark::State& bench, sh::DynamicsPath path) {
 
 void BM_StepRecursive(benchmark::State& bench) { step_benchmark(bench, sh::DynamicsPath::Recursive); }
 void BM_StepDense(benchmark::State& bench) { step_benchmark(bench, sh::DynamicsPath::Dense); }
+void BM_StepRecursiveTranslationalOnly(benchmark::State& bench) {
+  step_benchmark(bench, sh::DynamicsPath::Recursive, false);
+}
 
 void BM_StepRecursiveMovingRoot(benchmark::State& bench) {
   const auto n = static_cast<std::size_t>(bench.range(0));
@@ -105,6 +113,7 @@ void BM_Statics(benchmark::State& bench) {
 
 BENCHMARK(BM_StepRecursive)->RangeMultiplier(2)->Range(16, 1024)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
 BENCHMARK(BM_StepDense)->RangeMultiplier(2)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
+BENCHMARK(BM_StepRecursiveTranslationalOnly)->RangeMultiplier(4)->Range(16, 1024)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity(benchmark::oN);
 BENCHMARK(BM_StepRecursiveMovingRoot)->RangeMultiplier(4)->Range(16, 1024)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity(benchmark::oN);
 BENCHMARK(BM_ClothoidStepRecursive)->RangeMultiplier(2)->Range(16, 1024)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
 BENCHMARK(BM_ClothoidStepDense)->RangeMultiplier(2)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();

@@ -48,33 +48,55 @@ void check_state(const RodModel& model, const DynamicState& state) {
 
 }  // namespace
 
-MatX clothoid_mass_matrix(const ClothoidKinematics& kinematics) {
+std::vector<Mat3> clothoid_point_rotational_inertias(const RodModel& model, const ClothoidKinematics& kinematics) {
+  std::vector<double> nodes, weights;
+  gauss_legendre(model.gauss_points, nodes, weights);
+  const std::size_t per = nodes.size();
+  const double ell = kinematics.element_length();
+  std::vector<Mat3> inertias;
+  inertias.reserve(kinematics.points().size());
+  for (std::size_t g = 0; g < kinematics.points().size(); ++g) {
+    const Mat3& R = kinematics.points()[g].frame;
+    inertias.push_back(R * (0.5 * ell * weights[g % per] * model.rotational_inertia).asDiagonal() * R.transpose());
+  }
+  return inertias;
+}
+
+MatX clothoid_mass_matrix(const RodModel& model, const ClothoidKinematics& kinematics) {
   const auto n = static_cast<Eigen::Index>(3 * (kinematics.elements() + 1));
+  const bool rotation = !model.rotational_inertia.isZero(0.0);
+  const auto inertias = rotation ? clothoid_point_rotational_inertias(model, kinematics) : std::vector<Mat3>{};
   MatX M = MatX::Zero(n, n);
-  for (const auto& p : kinematics.points()) {
+  for (std::size_t g = 0; g < kinematics.points().size(); ++g) {
+    const ClothoidPoint& p = kinematics.points()[g];
     const MatX J = kinematics.position_jacobian(p.element, p.sigma);
     M.noalias() += p.mass * J.transpose() * J;
+    if (rotation) {
+      const MatX Theta = kinematics.rotation_jacobian(p.element, p.sigma);
+      M.noalias() += Theta.transpose() * inertias[g] * Theta;
+    }
   }
   return M;
 }
 
-std::vector<Vec3> clothoid_bias_accelerations(const RodModel& model, const ClothoidKinematics& kinematics,
-                                              const VecX& qdot) {
-  (void)model;
-  return clothoid_bias_accelerations(kinematics, qdot, RootState{});
-}
+namespace {
 
-std::vector<Vec3> clothoid_bias_accelerations(const ClothoidKinematics& kinematics, const VecX& qdot,
-                                              const RootState& root) {
+// zeta_g, omega_g, xi_g (world) at every Gauss point: the Featherstone bias recursion of dynamics.hpp
+// with the element-local rates of clothoid_element_rates (a = q_Q, b = (q_{Q+1} - q_Q) / ell and their
+// rates), in the element frame.
+struct ClothoidPointRates {
+  Vec3 zeta = Vec3::Zero(), omega = Vec3::Zero(), xi = Vec3::Zero();
+};
+
+std::vector<ClothoidPointRates> clothoid_point_rates(const ClothoidKinematics& kinematics, const VecX& qdot,
+                                                     const RootState& root) {
   const std::size_t per = kinematics.points_per_element(), n = kinematics.elements();
-  std::vector<Vec3> zeta(kinematics.points().size(), Vec3::Zero());
+  std::vector<ClothoidPointRates> rates(kinematics.points().size());
   if (qdot.lpNorm<Eigen::Infinity>() == 0.0 && root.angular_velocity.isZero(0.0) &&
       root.angular_acceleration.isZero(0.0) && root.acceleration.isZero(0.0))
-    return zeta;
+    return rates;
   const double ell = kinematics.element_length();
   const VecX& q = kinematics.q();
-  // The Featherstone bias recursion of dynamics.hpp with the element-local rates of
-  // clothoid_element_rates (a = q_Q, b = (q_{Q+1} - q_Q) / ell and their rates), in the element frame.
   Vec3 omega = root.angular_velocity, alpha = root.angular_acceleration, acc = root.acceleration;
   for (std::size_t e = 0; e < n; ++e) {
     const auto i = static_cast<Eigen::Index>(3 * e);
@@ -86,32 +108,71 @@ std::vector<Vec3> clothoid_bias_accelerations(const ClothoidKinematics& kinemati
       return Vec3(acc_l + alpha_l.cross(local.r) + omega_l.cross(omega_l.cross(local.r) + 2.0 * local.velocity) +
                   local.bias);
     };
+    const auto angular_bias = [&](const ClothoidRates& local) {
+      return Vec3(alpha_l + omega_l.cross(local.angular_velocity) + local.angular_bias);
+    };
     for (std::size_t g = 0; g < per; ++g) {
       const ClothoidRates local = clothoid_element_rates(a, b, adot, bdot, kinematics.points()[e * per + g].sigma);
-      zeta[e * per + g] = R * carried(local);
+      ClothoidPointRates& out = rates[e * per + g];
+      out.zeta = R * carried(local);
+      out.omega = R * (omega_l + local.angular_velocity);
+      out.xi = R * angular_bias(local);
     }
     const ClothoidRates end = clothoid_element_rates(a, b, adot, bdot, ell);
     acc = R * carried(end);
-    alpha = R * (alpha_l + omega_l.cross(end.angular_velocity) + end.angular_bias);
+    alpha = R * angular_bias(end);
     omega = R * (omega_l + end.angular_velocity);
   }
+  return rates;
+}
+
+}  // namespace
+
+std::vector<Vec3> clothoid_bias_accelerations(const RodModel& model, const ClothoidKinematics& kinematics,
+                                              const VecX& qdot) {
+  (void)model;
+  return clothoid_bias_accelerations(kinematics, qdot, RootState{});
+}
+
+std::vector<Vec3> clothoid_bias_accelerations(const ClothoidKinematics& kinematics, const VecX& qdot,
+                                              const RootState& root) {
+  const auto rates = clothoid_point_rates(kinematics, qdot, root);
+  std::vector<Vec3> zeta(rates.size());
+  for (std::size_t g = 0; g < rates.size(); ++g) zeta[g] = rates[g].zeta;
   return zeta;
+}
+
+std::vector<AngularRates> clothoid_angular_rates(const ClothoidKinematics& kinematics, const VecX& qdot,
+                                                 const RootState& root) {
+  const auto rates = clothoid_point_rates(kinematics, qdot, root);
+  std::vector<AngularRates> out(rates.size());
+  for (std::size_t g = 0; g < rates.size(); ++g) out[g] = {rates[g].omega, rates[g].xi};
+  return out;
 }
 
 namespace {
 
-// Dense path on given kinematics (built from the root pose of this step) and bias accelerations.
+// Dense path on given kinematics (built from the root pose of this step) and point rates.
 VecX dense_clothoid_velocity_change(const RodModel& model, const ClothoidKinematics& kin,
-                                    const std::vector<Vec3>& zeta, const DynamicState& state, double h) {
+                                    const std::vector<ClothoidPointRates>& rates, const DynamicState& state, double h) {
   const MatX K = clothoid_stiffness(model);
   const MatX D = (h * h + h * model.rayleigh_stiffness) * K;
-  std::vector<Vec3> bias(zeta.size());
-  for (std::size_t g = 0; g < zeta.size(); ++g) bias[g] = -kin.points()[g].mass * zeta[g];
-  // B_n = F_ext - sum_g m_g J_g^T zeta_g (the bias enters as point forces -m_g zeta_g)
-  const VecX B = clothoid_external_force(model, kin) +
-                 clothoid_generalised_force(kin, bias, Vec3::Zero(), Vec3::Zero());
+  std::vector<Vec3> bias(rates.size());
+  for (std::size_t g = 0; g < rates.size(); ++g) bias[g] = -kin.points()[g].mass * rates[g].zeta;
+  // B_n = F_ext - sum_g m_g J_g^T zeta_g - sum_g Theta_g^T (I_g xi_g + omega_g x I_g omega_g)
+  // (the bias enters as point forces -m_g zeta_g, the rotational terms through the dense Theta_g)
+  VecX B = clothoid_external_force(model, kin) + clothoid_generalised_force(kin, bias, Vec3::Zero(), Vec3::Zero());
+  if (!model.rotational_inertia.isZero(0.0)) {
+    const auto inertias = clothoid_point_rotational_inertias(model, kin);
+    for (std::size_t g = 0; g < rates.size(); ++g) {
+      const ClothoidPoint& p = kin.points()[g];
+      const Mat3& I = inertias[g];
+      B.noalias() -= kin.rotation_jacobian(p.element, p.sigma).transpose() *
+                     (I * rates[g].xi + rates[g].omega.cross(I * rates[g].omega));
+    }
+  }
   const VecX rhs = h * (-K * (state.q - clothoid_natural_strain_vector(model)) + B) - D * state.qdot;
-  const MatX A = clothoid_mass_matrix(kin) + D;
+  const MatX A = clothoid_mass_matrix(model, kin) + D;
   return A.ldlt().solve(rhs);
 }
 
@@ -156,11 +217,15 @@ struct NodeElimination {
 //   Phi = sum_g (m_g |a_g|^2 / 2 + beta_g . a_g) + x^T D x / 2 - b . x - h (M_end . alpha_N + F . a_N),
 // a_g = J_g x = X(d_g) A_Q + T_g (x_Q, x_{Q+1}),  A_{Q+1} = X(r_Q) A_Q + S_Q (x_Q, x_{Q+1}).
 VecX recursive_clothoid_velocity_change(const RodModel& model, const ClothoidKinematics& kin,
-                                        const std::vector<Vec3>& zeta, const DynamicState& state, double h) {
+                                        const std::vector<ClothoidPointRates>& rates, const DynamicState& state,
+                                        double h) {
   const std::size_t n = model.elements, per = kin.points_per_element();
   const TridiagonalStiffness K = tridiagonal_stiffness(model);
   const double factor = h * h + h * model.rayleigh_stiffness;  // D = factor K
   const VecX q0 = clothoid_natural_strain_vector(model);
+  const bool rotation = !model.rotational_inertia.isZero(0.0);
+  std::vector<double> nodes, weights;
+  gauss_legendre(model.gauss_points, nodes, weights);
 
   // b_j = -h (K (q - q0))_j - (D qdot)_j, block by block.
   VecX b(static_cast<Eigen::Index>(3 * (n + 1)));
@@ -197,7 +262,19 @@ VecX recursive_clothoid_velocity_change(const RodModel& model, const ClothoidKin
       B.block<3, 3>(0, 3).setIdentity();
       B.rightCols<6>() = point.local_jacobian;
       Z.noalias() += point.mass * B.transpose() * B;
-      z.noalias() += B.transpose() * (h * point.mass * (zeta[e * per + g] - model.gravity));
+      const ClothoidPointRates& rate = rates[e * per + g];
+      z.noalias() += B.transpose() * (h * point.mass * (rate.zeta - model.gravity));
+      if (rotation) {
+        // the point's angular acceleration alpha_Q + Theta_g (x_Q, x_{Q+1}) (+ xi_g): weight I_g,
+        // linear term h (I_g xi_g + omega_g x I_g omega_g)
+        const Mat3 I = point.frame * (0.5 * kin.element_length() * weights[g] * model.rotational_inertia).asDiagonal() *
+                       point.frame.transpose();
+        Mat312 Br = Mat312::Zero();
+        Br.leftCols<3>().setIdentity();
+        Br.rightCols<6>() = point.local_rotation_jacobian;
+        Z.noalias() += Br.transpose() * I * Br;
+        z.noalias() += Br.transpose() * (h * (I * rate.xi + rate.omega.cross(I * rate.omega)));
+      }
     }
     // ... the downstream value through (A_{Q+1}, x_{Q+1}) = L y ...
     Mat912 L = Mat912::Zero();
@@ -221,6 +298,10 @@ VecX recursive_clothoid_velocity_change(const RodModel& model, const ClothoidKin
     step.linear = z.segment<3>(9);
     const Mat93 coupling_hinv = step.coupling * step.h_inverse;
     P = Z.topLeftCorner<9, 9>() - coupling_hinv * step.coupling.transpose();
+    // Keep the form exactly symmetric: the map P_{Q+1} -> P_Q amplifies the antisymmetric part of its
+    // rounding errors (as the Super-Helix I^A, dynamics.cpp: dense vs recursive 1e-2 at N = 32 with
+    // h = 1e-3 before, round-off after); the symmetric part is not amplified.
+    P = (0.5 * (P + P.transpose())).eval();
     p = z.head<9>() - coupling_hinv * step.linear;
   }
 
@@ -265,9 +346,9 @@ VecX clothoid_velocity_change(const RodModel& model, const DynamicState& state, 
   moved.root_position = root.position;
   moved.root_frame = root.frame;
   const ClothoidKinematics kin(moved, state.q);
-  const auto zeta = clothoid_bias_accelerations(kin, state.qdot, root);
-  return path == DynamicsPath::Dense ? dense_clothoid_velocity_change(moved, kin, zeta, state, h)
-                                     : recursive_clothoid_velocity_change(moved, kin, zeta, state, h);
+  const auto rates = clothoid_point_rates(kin, state.qdot, root);
+  return path == DynamicsPath::Dense ? dense_clothoid_velocity_change(moved, kin, rates, state, h)
+                                     : recursive_clothoid_velocity_change(moved, kin, rates, state, h);
 }
 
 DynamicState clothoid_step(const RodModel& model, const DynamicState& state, double h) {
@@ -287,17 +368,33 @@ DynamicState clothoid_step(const RodModel& model, const DynamicState& state, dou
   return next;
 }
 
-double clothoid_kinetic_energy(const ClothoidKinematics& kinematics, const VecX& qdot) {
+double clothoid_kinetic_energy(const RodModel& model, const ClothoidKinematics& kinematics, const VecX& qdot) {
   double energy = 0.0;
   const auto v = point_velocities(kinematics, qdot);
   for (std::size_t g = 0; g < v.size(); ++g) energy += 0.5 * kinematics.points()[g].mass * v[g].squaredNorm();
+  if (model.rotational_inertia.isZero(0.0)) return energy;
+  // omega_g = omega_Q + Theta_g w_Q (root at rest), material components R_g^T omega_g.
+  std::vector<double> nodes, weights;
+  gauss_legendre(model.gauss_points, nodes, weights);
+  const std::size_t per = kinematics.points_per_element();
+  const double ell = kinematics.element_length();
+  Vec3 omega = Vec3::Zero();
+  for (std::size_t e = 0; e < kinematics.elements(); ++e) {
+    const Eigen::Matrix<double, 6, 1> w = qdot.segment<6>(static_cast<Eigen::Index>(3 * e));
+    for (std::size_t g = 0; g < per; ++g) {
+      const ClothoidPoint& point = kinematics.points()[e * per + g];
+      const Vec3 material = point.frame.transpose() * (omega + point.local_rotation_jacobian * w);
+      energy += 0.25 * ell * weights[g] * material.dot(model.rotational_inertia.cwiseProduct(material));
+    }
+    omega += kinematics.end_rotation_jacobian(e) * w;
+  }
   return energy;
 }
 
 double clothoid_total_energy(const RodModel& model, const DynamicState& state) {
   check_state(model, state);
   const ClothoidKinematics kin(model, state.q);
-  return clothoid_kinetic_energy(kin, state.qdot) + clothoid_elastic_energy(model, state.q) +
+  return clothoid_kinetic_energy(model, kin, state.qdot) + clothoid_elastic_energy(model, state.q) +
          clothoid_gravity_energy(model, kin) - model.end_force.dot(kin.tip_position());
 }
 

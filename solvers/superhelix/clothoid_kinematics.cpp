@@ -37,6 +37,7 @@ ClothoidKinematics::ClothoidKinematics(const RodModel& model, const VecX& q, boo
       point.position = p + point.offset;
       point.frame = R * maps.R;
       point.local_jacobian = R * maps.translation;
+      point.local_rotation_jacobian = R * maps.rotation;
       points_.push_back(point);
     }
     const LocalMaps end = local_maps(e, ell_);

@@ -33,26 +33,49 @@ void check_state(const RodModel& model, const DynamicState& state, double h) {
   if (!state.qdot.allFinite()) throw InputError("state.qdot", "invalid parameter 'state.qdot': must be finite");
 }
 
+// What the root-to-tip pass knows about one Gauss point, in the base frame of its element.
+struct LocalPointRates {
+  ElementRates point;           // offset c, Jacobian dG0, velocity, bias (element.hpp)
+  Vec3 zeta = Vec3::Zero();     // translational bias acceleration
+  // Filled only when the pass is asked for the rotation (rotational inertia on):
+  Mat3 E = Mat3::Identity();    // frame of the point relative to the base: R_g = R_Q E
+  Mat3 G = Mat3::Zero();        // rotation per unit q_Q: omega_g = omega_Q + R_Q G qdot_Q
+  Vec3 omega = Vec3::Zero();    // angular velocity of the point's frame (with the base's)
+  Vec3 xi = Vec3::Zero();       // angular bias acceleration
+};
+
 // Root-to-tip pass (O(N), dynamics.hpp): for every element its base frame R_e and end maps, and for
 // every Gauss point its local maps (offset, Jacobian in the base frame of its element) and its bias
-// acceleration zeta_g, also in that base frame (world zeta = R_e zeta_local): the base rates are
-// rotated into the element frame once per element, so the per-point work is frame-free.
-// on_point(e, g, R_e, local, zeta_local); on_element(e, R_e, r_e = p_{e+1} - p_e, Theta_e, T_e) after
-// its points (world).
+// accelerations, also in that base frame (world zeta = R_e zeta_local): the base rates are rotated
+// into the element frame once per element, so the per-point work is frame-free. With `rotation`
+// the points also get their frame, rotation Jacobian, angular velocity and angular bias
+// (element_end_rates at the point instead of element_point_rates).
+// on_point(e, g, R_e, local); on_element(e, R_e, r_e = p_{e+1} - p_e, Theta_e, T_e) after its points (world).
 template <class OnPoint, class OnElement>
 void rate_pass(const RodModel& model, const VecX& q, const VecX& qdot, const RootState& root,
-               const std::vector<double>& nodes, OnPoint&& on_point, OnElement&& on_element) {
+               const std::vector<double>& nodes, bool rotation, OnPoint&& on_point, OnElement&& on_element) {
   const double ell = element_length(model);
   Mat3 R = root.frame;
   Vec3 omega = root.angular_velocity, alpha = root.angular_acceleration, acc = root.acceleration;
+  LocalPointRates local;
   for (std::size_t e = 0; e < model.elements; ++e) {
     const Vec3 qe = q.segment<3>(3 * e), rate = qdot.segment<3>(3 * e);
     const Vec3 omega_l = R.transpose() * omega, alpha_l = R.transpose() * alpha, acc_l = R.transpose() * acc;
     for (std::size_t g = 0; g < nodes.size(); ++g) {
-      const ElementRates local = element_point_rates(qe, rate, 0.5 * ell * (1.0 + nodes[g]));
-      const Vec3 zeta = acc_l + alpha_l.cross(local.offset) +
-                        omega_l.cross(omega_l.cross(local.offset) + 2.0 * local.velocity) + local.bias;
-      on_point(e, g, R, local, zeta);
+      const double sigma = 0.5 * ell * (1.0 + nodes[g]);
+      if (rotation) {
+        const ElementEndRates at = element_end_rates(qe, rate, sigma);
+        local.point = at.point;
+        local.E = at.E;
+        local.G = at.G;
+        local.omega = omega_l + at.angular_velocity;
+        local.xi = alpha_l + omega_l.cross(at.angular_velocity) + at.angular_bias;
+      } else {
+        local.point = element_point_rates(qe, rate, sigma);
+      }
+      local.zeta = acc_l + alpha_l.cross(local.point.offset) +
+                   omega_l.cross(omega_l.cross(local.point.offset) + 2.0 * local.point.velocity) + local.point.bias;
+      on_point(e, g, R, static_cast<const LocalPointRates&>(local));
     }
     const ElementEndRates end = element_end_rates(qe, rate, ell);
     const Vec3 r = R * end.point.offset;
@@ -64,6 +87,41 @@ void rate_pass(const RodModel& model, const VecX& q, const VecX& qdot, const Roo
     omega = R * (omega_l + end.angular_velocity);
     R = R * end.E;
   }
+}
+
+bool has_rotational_inertia(const RodModel& model) { return !model.rotational_inertia.isZero(0.0); }
+
+// E diag(J) E^T for a rotation E (the rotational inertia density in the frame E is given in).
+Mat3 rotate_inertia(const Mat3& E, const Vec3& J) {
+  return E * J.asDiagonal() * E.transpose();
+}
+
+// World velocity terms of every Gauss point from one rate pass: zeta_g, and with rotational
+// inertia omega_g and xi_g.
+struct PointRates {
+  Vec3 zeta = Vec3::Zero();
+  Vec3 omega = Vec3::Zero();
+  Vec3 xi = Vec3::Zero();
+};
+
+std::vector<PointRates> world_point_rates(const RodModel& model, const VecX& q, const VecX& qdot,
+                                          const RootState& root, bool rotation) {
+  std::vector<double> nodes, weights;
+  gauss_legendre(model.gauss_points, nodes, weights);
+  const std::size_t per = nodes.size();
+  std::vector<PointRates> rates(model.elements * per);
+  rate_pass(
+      model, q, qdot, root, nodes, rotation,
+      [&](std::size_t e, std::size_t g, const Mat3& R, const LocalPointRates& local) {
+        PointRates& out = rates[e * per + g];
+        out.zeta = R * local.zeta;
+        if (rotation) {
+          out.omega = R * local.omega;
+          out.xi = R * local.xi;
+        }
+      },
+      [](std::size_t, const Mat3&, const Vec3&, const Mat3&, const Mat3&) {});
+  return rates;
 }
 
 RootState fixed_root(const RodModel& model) {
@@ -90,7 +148,9 @@ VecX elastic_rhs(const RodModel& model, const DynamicState& state, double h, Vec
 VecX dense_velocity_change(const RodModel& model_in, const DynamicState& state, double h, const RootState& root) {
   const RodModel model = model_with_root(model_in, root);
   const Kinematics kinematics(model, state.q);
-  const auto zeta = bias_accelerations(model, kinematics, state.qdot, root);
+  const bool rotation = has_rotational_inertia(model);
+  const auto rates = world_point_rates(model, state.q, state.qdot, root, rotation);
+  const auto inertias = rotation ? point_rotational_inertias(model, kinematics) : std::vector<Mat3>{};
   const auto n = static_cast<Eigen::Index>(dof_count(model));
   MatX M = MatX::Zero(n, n);
   VecX loads = VecX::Zero(n);
@@ -100,7 +160,15 @@ VecX dense_velocity_change(const RodModel& model_in, const DynamicState& state, 
     const MatX J = kinematics.position_jacobian(point.element, point.sigma);
     const auto used = static_cast<Eigen::Index>(3 * (point.element + 1));  // causality: J is zero beyond
     M.topLeftCorner(used, used).noalias() += point.mass * J.leftCols(used).transpose() * J.leftCols(used);
-    loads.head(used) += J.leftCols(used).transpose() * (point.mass * (model.gravity - zeta[g]));
+    loads.head(used) += J.leftCols(used).transpose() * (point.mass * (model.gravity - rates[g].zeta));
+    if (rotation) {
+      // Euler's equation of the cross-section: torque I xi + omega x I omega through Theta_g.
+      const MatX Theta = kinematics.rotation_jacobian(point.element, point.sigma);
+      const Mat3& I = inertias[g];
+      M.topLeftCorner(used, used).noalias() += Theta.leftCols(used).transpose() * I * Theta.leftCols(used);
+      const Vec3 spin = I * rates[g].omega;
+      loads.head(used) -= Theta.leftCols(used).transpose() * (I * rates[g].xi + rates[g].omega.cross(spin));
+    }
   }
   const std::size_t last = model.elements - 1;
   const double ell = element_length(model);
@@ -157,11 +225,16 @@ VecX recursive_velocity_change(const RodModel& model, const DynamicState& state,
 
   // Pass 1 (root to tip): kinematics, bias accelerations and the element sums, accumulated in the
   // element's base frame (c, J local) and rotated once: [R c]x R J = R [c]x J, -[R c]x^2 = R (|c|^2 I - c c^T) R^T.
+  // A point's rotational inertia in the base frame is I_l = (w ell/2) E diag(J) E^T (world R I_l R^T),
+  // its rotation Jacobian G (world R G): it adds I_l to the rotational part, I_l G to the top rows of
+  // U_pt, G^T I_l G to TT, and the torque h (I_l xi + omega x I_l omega) to the moment and (through
+  // G^T) to the joint forces.
+  const bool rotation = has_rotational_inertia(model);
   Mat3 rotational = Mat3::Zero(), cross_j = Mat3::Zero(), sum_j = Mat3::Zero();
   Vec3 first_moment = Vec3::Zero(), moment = Vec3::Zero(), force = Vec3::Zero(), gravity_local = Vec3::Zero();
   rate_pass(
-      model, state.q, state.qdot, root, nodes,
-      [&](std::size_t e, std::size_t g, const Mat3& R, const ElementRates& local, const Vec3& zeta) {
+      model, state.q, state.qdot, root, nodes, rotation,
+      [&](std::size_t e, std::size_t g, const Mat3& R, const LocalPointRates& local) {
         ElementBlock& block = blocks[e];
         if (g == 0) {
           block.mass = 0.0;
@@ -175,9 +248,10 @@ VecX recursive_velocity_change(const RodModel& model, const DynamicState& state,
           force.setZero();
           gravity_local = R.transpose() * model.gravity;
         }
-        const double m = model.line_density * 0.5 * ell * weights[g];
-        const Vec3& c = local.offset;
-        const Mat3& J = local.jacobian;
+        const double w = 0.5 * ell * weights[g];
+        const double m = model.line_density * w;
+        const Vec3& c = local.point.offset;
+        const Mat3& J = local.point.jacobian;
         block.mass += m;
         first_moment += m * c;
         rotational.noalias() -= m * c * c.transpose();
@@ -185,10 +259,20 @@ VecX recursive_velocity_change(const RodModel& model, const DynamicState& state,
         for (int j = 0; j < 3; ++j) cross_j.col(j) += m * c.cross(J.col(j));
         sum_j += m * J;
         block.tt.noalias() += m * J.transpose() * J;
-        const Vec3 beta = h * m * (zeta - gravity_local);
+        const Vec3 beta = h * m * (local.zeta - gravity_local);
         moment += c.cross(beta);
         force += beta;
         block.t_beta.noalias() += J.transpose() * beta;
+        if (rotation) {
+          const Mat3 I = rotate_inertia(local.E, w * model.rotational_inertia);
+          const Mat3 IG = I * local.G;
+          rotational += I;
+          cross_j += IG;
+          block.tt.noalias() += local.G.transpose() * IG;
+          const Vec3 torque = h * (I * local.xi + local.omega.cross(I * local.omega));
+          moment += torque;
+          block.t_beta.noalias() += local.G.transpose() * torque;
+        }
       },
       [&](std::size_t e, const Mat3& R, const Vec3& r, const Mat3& theta, const Mat3& T) {
         ElementBlock& block = blocks[e];
@@ -227,6 +311,11 @@ VecX recursive_velocity_change(const RodModel& model, const DynamicState& state,
     articulated.block<3, 3>(3, 0) -= skew(block.first_moment);
     articulated.block<3, 3>(3, 3).diagonal().array() += block.mass;
     articulated.noalias() -= U * HinvUt;
+    // Keep I^A exactly symmetric: the map I^A_{Q+1} -> I^A_Q amplifies the antisymmetric part of its
+    // rounding errors (measured ~3x per element for a curled rod: at N = 32 the recursion was off by
+    // 1e-5 .. 1e-2 relative, for any rotational inertia, while cond(M + D) ~ 1e5); the symmetric part
+    // is not amplified, so symmetrising every step keeps I^A at round-off (measured 2e-16 vs long double).
+    articulated = (0.5 * (articulated + articulated.transpose())).eval();
     bias.head<3>() += block.r.cross(bias.tail<3>());
     bias += block.point_bias + U * (Hinv * u);
     block.h_inverse = Hinv;
@@ -257,26 +346,53 @@ std::vector<Vec3> bias_accelerations(const RodModel& model, const Kinematics& ki
 
 std::vector<Vec3> bias_accelerations(const RodModel& model, const Kinematics& kinematics, const VecX& qdot,
                                      const RootState& root) {
-  std::vector<double> nodes, weights;
-  gauss_legendre(model.gauss_points, nodes, weights);
-  const std::size_t per = nodes.size();
-  std::vector<Vec3> zeta(kinematics.points().size(), Vec3::Zero());
-  rate_pass(
-      model, kinematics.q(), qdot, root, nodes,
-      [&](std::size_t e, std::size_t g, const Mat3& R, const ElementRates&, const Vec3& z) {
-        zeta[e * per + g] = R * z;
-      },
-      [](std::size_t, const Mat3&, const Vec3&, const Mat3&, const Mat3&) {});
+  const auto rates = world_point_rates(model, kinematics.q(), qdot, root, false);
+  std::vector<Vec3> zeta(rates.size());
+  for (std::size_t g = 0; g < rates.size(); ++g) zeta[g] = rates[g].zeta;
   return zeta;
 }
 
-MatX mass_matrix(const Kinematics& kinematics) {
+std::vector<AngularRates> angular_rates(const RodModel& model, const Kinematics& kinematics, const VecX& qdot) {
+  return angular_rates(model, kinematics, qdot, fixed_root(model));
+}
+
+std::vector<AngularRates> angular_rates(const RodModel& model, const Kinematics& kinematics, const VecX& qdot,
+                                        const RootState& root) {
+  const auto rates = world_point_rates(model, kinematics.q(), qdot, root, true);
+  std::vector<AngularRates> out(rates.size());
+  for (std::size_t g = 0; g < rates.size(); ++g) out[g] = {rates[g].omega, rates[g].xi};
+  return out;
+}
+
+std::vector<Mat3> point_rotational_inertias(const RodModel& model, const Kinematics& kinematics) {
+  std::vector<double> nodes, weights;
+  gauss_legendre(model.gauss_points, nodes, weights);
+  const std::size_t per = nodes.size();
+  const double ell = kinematics.element_length();
+  std::vector<Mat3> inertias;
+  inertias.reserve(kinematics.points().size());
+  for (std::size_t g = 0; g < kinematics.points().size(); ++g) {
+    const GaussPoint& point = kinematics.points()[g];
+    const Mat3 R = kinematics.frame(point.element, point.sigma);
+    inertias.push_back(rotate_inertia(R, 0.5 * ell * weights[g % per] * model.rotational_inertia));
+  }
+  return inertias;
+}
+
+MatX mass_matrix(const RodModel& model, const Kinematics& kinematics) {
   const auto n = static_cast<Eigen::Index>(3 * kinematics.elements());
+  const bool rotation = has_rotational_inertia(model);
+  const auto inertias = rotation ? point_rotational_inertias(model, kinematics) : std::vector<Mat3>{};
   MatX M = MatX::Zero(n, n);
-  for (const auto& point : kinematics.points()) {
+  for (std::size_t g = 0; g < kinematics.points().size(); ++g) {
+    const GaussPoint& point = kinematics.points()[g];
     const MatX J = kinematics.position_jacobian(point.element, point.sigma);
     const auto used = static_cast<Eigen::Index>(3 * (point.element + 1));
     M.topLeftCorner(used, used).noalias() += point.mass * J.leftCols(used).transpose() * J.leftCols(used);
+    if (rotation) {
+      const MatX Theta = kinematics.rotation_jacobian(point.element, point.sigma);
+      M.topLeftCorner(used, used).noalias() += Theta.leftCols(used).transpose() * inertias[g] * Theta.leftCols(used);
+    }
   }
   return M;
 }
@@ -307,17 +423,40 @@ DynamicState step(const RodModel& model, const DynamicState& state, double h, Dy
   return next;
 }
 
-double kinetic_energy(const Kinematics& kinematics, const VecX& qdot) {
+double rotational_kinetic_energy(const RodModel& model, const Kinematics& kinematics, const VecX& qdot) {
+  if (!has_rotational_inertia(model)) return 0.0;
+  // omega at the points by the O(N) root-to-tip sum (root at rest): omega_g = omega_Q + R_Q G(sigma) qdot_Q,
+  // omega_{Q+1} = omega_Q + Theta_Q qdot_Q; the material components R_g^T omega_g with R_g = R_Q E(sigma).
+  std::vector<double> nodes, weights;
+  gauss_legendre(model.gauss_points, nodes, weights);
+  const std::size_t per = nodes.size();
+  const double ell = kinematics.element_length();
+  double energy = 0.0;
+  Vec3 omega = Vec3::Zero();
+  for (std::size_t e = 0; e < kinematics.elements(); ++e) {
+    const Vec3 qe = kinematics.q().segment<3>(3 * e), rate = qdot.segment<3>(3 * e);
+    const Mat3& R = kinematics.base_frame(e);
+    for (std::size_t g = 0; g < per; ++g) {
+      const ElementMaps maps = element_maps(qe, kinematics.points()[e * per + g].sigma);
+      const Vec3 material = maps.E.transpose() * (R.transpose() * omega + maps.G * rate);
+      energy += 0.25 * ell * weights[g] * material.dot(model.rotational_inertia.cwiseProduct(material));
+    }
+    omega += kinematics.end_rotation_jacobian(e) * rate;
+  }
+  return energy;
+}
+
+double kinetic_energy(const RodModel& model, const Kinematics& kinematics, const VecX& qdot) {
   const auto velocities = kinematics.point_velocities(qdot);
   double energy = 0.0;
   for (std::size_t g = 0; g < velocities.size(); ++g)
     energy += 0.5 * kinematics.points()[g].mass * velocities[g].squaredNorm();
-  return energy;
+  return energy + rotational_kinetic_energy(model, kinematics, qdot);
 }
 
 double total_energy(const RodModel& model, const DynamicState& state) {
   const Kinematics kinematics(model, state.q);
-  return kinetic_energy(kinematics, state.qdot) + elastic_energy(model, state.q) +
+  return kinetic_energy(model, kinematics, state.qdot) + elastic_energy(model, state.q) +
          gravity_energy(model, kinematics) - model.end_force.dot(kinematics.tip_position());
 }
 
@@ -327,7 +466,7 @@ VecX bending_frequencies(const RodModel& model, std::size_t count) {
     throw InputError("count", "invalid parameter 'count' = " + std::to_string(count) +
                                   ": must be an integer in [1, N = " + std::to_string(model.elements) + "]");
   const Kinematics kinematics(model, VecX::Zero(static_cast<Eigen::Index>(dof_count(model))));
-  const MatX M = mass_matrix(kinematics);
+  const MatX M = mass_matrix(model, kinematics);
   const VecX k = generalised_stiffness(model);
   const auto n = static_cast<Eigen::Index>(model.elements);
   MatX Mb(n, n), Kb = MatX::Zero(n, n);

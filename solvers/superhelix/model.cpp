@@ -23,6 +23,9 @@ void validate(const RodModel& model) {
   require_positive("stiffness.bending1 (EI1)", model.stiffness[1]);
   require_positive("stiffness.bending2 (EI2)", model.stiffness[2]);
   require_positive("line_density", model.line_density);
+  require_non_negative("rotational_inertia.twist (rho I0)", model.rotational_inertia[0]);
+  require_non_negative("rotational_inertia.bending1 (rho I1)", model.rotational_inertia[1]);
+  require_non_negative("rotational_inertia.bending2 (rho I2)", model.rotational_inertia[2]);
   require_non_negative("rayleigh_stiffness", model.rayleigh_stiffness);
   require_finite_vector("natural_strain", model.natural_strain);
   if (!model.natural_strain_per_element.empty()) {
@@ -50,6 +53,13 @@ void validate(const RodModel& model) {
   if (model.gauss_points < 1 || model.gauss_points > 8)
     throw InputError("gauss_points", "invalid parameter 'gauss_points' = " +
                                          std::to_string(model.gauss_points) + ": must be an integer in [1, 8]");
+}
+
+Vec3 elliptic_section_inertia(double line_density, double a, double b) {
+  require_positive("line_density", line_density);
+  require_positive("a", a);
+  require_positive("b", b);
+  return 0.25 * line_density * Vec3(a * a + b * b, b * b, a * a);
 }
 
 Vec3 natural_strain(const RodModel& model, std::size_t element) {

@@ -259,8 +259,8 @@ TEST(SuperClothoidDynamics, KineticEnergyIsQuadraticFormOfMassMatrix) {
     qdot[i] = std::cos(1.9 * double(i));
   }
   const sh::ClothoidKinematics kin(model, q);
-  const MatX M = sh::clothoid_mass_matrix(kin);
-  const double t = sh::clothoid_kinetic_energy(kin, qdot);
+  const MatX M = sh::clothoid_mass_matrix(model, kin);
+  const double t = sh::clothoid_kinetic_energy(model, kin, qdot);
   EXPECT_NEAR(0.5 * qdot.dot(M * qdot), t, 64.0 * kEpsilon * t);
   EXPECT_LE((M - M.transpose()).norm(), 64.0 * kEpsilon * M.norm());
 }

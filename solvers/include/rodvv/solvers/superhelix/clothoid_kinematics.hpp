@@ -36,6 +36,7 @@ struct ClothoidPoint {
   Mat3 frame;
   Vec3 offset;           // d = r - p_Q
   Mat36 local_jacobian;  // dr / d(q_Q, q_{Q+1}) through the element itself
+  Mat36 local_rotation_jacobian;  // Theta (dR = [Theta dq]x R) w.r.t. (q_Q, q_{Q+1}) through the element itself
 };
 
 class ClothoidKinematics {

@@ -1,34 +1,57 @@
 #pragma once
-// Dynamics of a Super-Helix (ALGORITHMS.md §1.4-1.6): Lagrangian with translational inertia
-// T = 1/2 int rho S |r_t|^2 ds (Gauss quadrature: point masses m_g), elastic energy
-// 1/2 (q - q0)^T K (q - q0), gravity, dead end loads and Rayleigh (stiffness-proportional) damping
-// -gamma K qdot:
+// Dynamics of a Super-Helix (ALGORITHMS.md §1.4-1.6): Lagrangian with the kinetic energy of the
+// translation AND of the rotation of the cross-sections (issue 11),
+//   T = 1/2 int rho S |r_t|^2 ds + 1/2 int omega . (R J R^T) omega ds,  J = diag(rho I0, rho I1, rho I2)
+// (model.hpp: material components, omega the angular velocity of the material frame), by Gauss
+// quadrature: point masses m_g = rho S w_g ell/2 and point rotational inertias
+// I_g = (w_g ell/2) R_g J R_g^T (world); elastic energy 1/2 (q - q0)^T K (q - q0), gravity, dead end
+// loads and Rayleigh (stiffness-proportional) damping -gamma K qdot:
 //
-//   M(q) qddot + K (q - q0) = -gamma K qdot + F_ext(q) - sum_g m_g J_g^T (Jdot_g qdot)
+//   M(q) qddot + K (q - q0) = -gamma K qdot + F_ext(q) - sum_g m_g J_g^T zeta_g
+//                             - sum_g Theta_g^T (I_g xi_g + omega_g x (I_g omega_g)),
+//   M = sum_g m_g J_g^T J_g + Theta_g^T I_g Theta_g,
 //
-// Velocity terms: the bias acceleration zeta_g = Jdot_g qdot (plus the root's acceleration terms
-// when the root moves, root_motion.hpp) of every Gauss point, in closed form in one root-to-tip pass
-// (the Featherstone bias recursion): with omega_Q, alpha_Q, a_Q the angular velocity, the angular
-// and the linear bias acceleration of base Q (root values at Q = 0),
+// with J_g = dr_g/dq, Theta_g the rotation Jacobian of the frame at point g (omega_g = omega_root +
+// Theta_g qdot, kinematics.hpp), zeta_g = Jdot_g qdot and xi_g = Thetadot_g qdot the translational and
+// angular bias accelerations (so r_tt = J qddot + zeta, omega_t = Theta qddot + xi). The rotational
+// terms are Euler's equations of each cross-section (Kane's form: the partial angular velocities
+// Theta_g times the inertia torque d/dt(I omega) = I omega_t + omega x I omega); the last one is the
+// gyroscopic term. With J = 0 the rotational terms are skipped: the translational-only model of the
+// 2006 paper, whose M is only semi-definite (twist rates of a straight element move no mass).
+//
+// Velocity terms: zeta_g and xi_g (plus the root's acceleration terms when the root moves,
+// root_motion.hpp) of every Gauss point, in closed form in one root-to-tip pass (the Featherstone
+// bias recursion): with omega_Q, alpha_Q, a_Q the angular velocity, the angular and the linear bias
+// acceleration of base Q (root values at Q = 0),
 //   zeta_g = a_Q + alpha_Q x d_g + omega_Q x (omega_Q x d_g) + 2 omega_Q x u_g + R_Q c''_g,
-//   a_{Q+1} = (the same at the element's end),  alpha_{Q+1} = alpha_Q + omega_Q x W_Q + R_Q W'_Q,
-//   omega_{Q+1} = omega_Q + W_Q,
-// where u_g = T_g qdot_Q, W_Q = R_Q G(ell) qdot_Q, and c'', W' are the element-local second
-// directional derivatives of element.hpp (ElementRates). Both paths use this same zeta.
+//   omega_g = omega_Q + W_g,  xi_g = alpha_Q + omega_Q x W_g + R_Q W'_g,
+//   a_{Q+1} = (zeta at the element's end),  alpha_{Q+1} = xi at the element's end,  omega_{Q+1} = omega_Q + W_Q,
+// where u_g = T_g qdot_Q, W_g = R_Q G(sigma_g) qdot_Q, and c'', W' are the element-local second
+// directional derivatives of element.hpp (ElementRates, ElementEndRates). Both paths use these same
+// rates; tests/solvers/test_superhelix_rotational_inertia.cpp checks the resulting velocity terms
+// against an independent oracle (Lagrange's d/dt dT/dqdot - dT/dq from finite differences of T).
 //
 // Semi-implicit Euler (§1.5), implicit in the elastic and damping terms, explicit in the rest:
 //   (M_n + D) dv = h (-K (q_n - q0) + B_n) - D qdot_n,   D = (h^2 + h gamma) K,
 //   qdot_{n+1} = qdot_n + dv,   q_{n+1} = q_n + h qdot_{n+1},
-//   B_n = F_ext(q_n) - sum_g m_g J_g^T zeta_g.
+//   B_n = F_ext(q_n) - (the velocity terms above at (q_n, qdot_n)).
 // Two paths solve the same linear system:
-//   Dense: point Jacobians (O(N^2)), M = sum m_g J_g^T J_g (O(N^3)), LDL^T (O(N^3)).
+//   Dense: point Jacobians (O(N^2)), M assembled (O(N^3)), LDL^T (O(N^3)).
 //   Recursive: the articulated-body recursion of §1.6 (tip-to-root inertias, root-to-tip solve),
-//   O(N), with the bias and gravity entering as point wrenches beta_g = h (m_g zeta_g - m_g g) and
-//   the end loads as the tip wrench.
-// Recursive cost: one root-to-tip pass (kinematics and zeta), one tip-to-root pass (articulated
-// inertias, 6 x 6) and one root-to-tip solve, no heap allocation per element (a reused workspace).
-// Moving root (root_motion.hpp): the kinematics starts from the root pose at state.time and zeta
-// carries the root's acceleration terms (so the forward solve starts from A_0 = 0); overloads with a
+//   O(N). Each Gauss point is a rigid body (mass m_g at offset d_g, rotational inertia I_g about its
+//   centre): I_el = sum_g I_p(d_g) + [[I_g, 0], [0, 0]], U_pt = sum_g [[m [d]x T_g + I_g Theta_g]; m T_g],
+//   TT = sum_g m T_g^T T_g + Theta_g^T I_g Theta_g (Theta_g = R_Q G(sigma_g), the point's rotation per
+//   unit q_Q), and the velocity terms and gravity enter as point wrenches
+//   (moment, force) = h (d x f + I_g xi_g + omega_g x I_g omega_g, f),  f = m_g (zeta_g - g), the
+//   end loads as the tip wrench.
+// The tip-to-root pass symmetrises I^A after every element: the map I^A_{Q+1} -> I^A_Q amplifies the
+// antisymmetric part of its rounding errors (~3x per element), which made the O(N) step drift from
+// the dense one at large N (1.8e-3 relative at N = 64, h = 1e-3, on a curled rod) before issue 11.
+// Recursive cost: one root-to-tip pass (kinematics and rates), one tip-to-root pass (articulated
+// inertias, 6 x 6) and one root-to-tip solve, no heap allocation per element (a reused workspace);
+// the rotational terms add ~30 % (bench/bench_superhelix.cpp).
+// Moving root (root_motion.hpp): the kinematics starts from the root pose at state.time and zeta, xi
+// carry the root's acceleration terms (so the forward solve starts from A_0 = 0); overloads with a
 // RootMotion argument, the others use the model's fixed root.
 // Both throw InputError for h <= 0 or non-finite, or a state of the wrong size / non-finite.
 #include <cstddef>
@@ -55,9 +78,26 @@ std::vector<Vec3> bias_accelerations(const RodModel& model, const Kinematics& ki
 std::vector<Vec3> bias_accelerations(const RodModel& model, const Kinematics& kinematics, const VecX& qdot,
                                      const RootState& root);
 
-// Dense generalised mass matrix sum_g m_g J_g^T J_g (3N x 3N, symmetric positive semi-definite:
-// twist rates of a straight element move no mass).
-MatX mass_matrix(const Kinematics& kinematics);
+// Angular velocity omega_g (world, including the root's) and angular bias acceleration xi_g
+// (omega_t = Theta_g qddot + xi_g) of the material frame at every Gauss point (Kinematics::points()
+// order), from the same root-to-tip pass as bias_accelerations.
+struct AngularRates {
+  Vec3 angular_velocity;
+  Vec3 angular_bias;
+};
+std::vector<AngularRates> angular_rates(const RodModel& model, const Kinematics& kinematics, const VecX& qdot);
+// The same with a moving root: `kinematics` must have been built from root.position / root.frame.
+std::vector<AngularRates> angular_rates(const RodModel& model, const Kinematics& kinematics, const VecX& qdot,
+                                        const RootState& root);
+
+// World rotational inertia I_g = (w_g ell/2) R_g J R_g^T of every Gauss point (the quadrature of
+// the cross-sections' rotational inertia; all zero when model.rotational_inertia = 0).
+std::vector<Mat3> point_rotational_inertias(const RodModel& model, const Kinematics& kinematics);
+
+// Dense generalised mass matrix sum_g m_g J_g^T J_g + Theta_g^T I_g Theta_g (3N x 3N, symmetric;
+// positive definite when every rho I_k > 0, only semi-definite with rotational_inertia = 0:
+// twist rates of a straight element then move no mass). `kinematics` must be built from `model`.
+MatX mass_matrix(const RodModel& model, const Kinematics& kinematics);
 
 // dv of one semi-implicit Euler step by either path.
 VecX velocity_change(const RodModel& model, const DynamicState& state, double h, DynamicsPath path);
@@ -69,14 +109,18 @@ VecX velocity_change(const RodModel& model, const DynamicState& state, double h,
 DynamicState step(const RodModel& model, const DynamicState& state, double h, DynamicsPath path,
                   const RootMotion& root);
 
-// Energies: kinetic 1/2 sum_g m_g |v_g|^2 (= 1/2 qdot^T M qdot), and total = kinetic + elastic +
-// gravity - F_end . r_tip (the end moment is left out: it has no potential in 3-D).
-double kinetic_energy(const Kinematics& kinematics, const VecX& qdot);
+// Energies (root at rest): kinetic = translational 1/2 sum_g m_g |v_g|^2 + rotational
+// 1/2 sum_g omega_g . I_g omega_g (= 1/2 qdot^T M qdot), and total = kinetic + elastic + gravity
+// - F_end . r_tip (the end moment is left out: it has no potential in 3-D). `kinematics` must be
+// built from `model`.
+double kinetic_energy(const RodModel& model, const Kinematics& kinematics, const VecX& qdot);
+double rotational_kinetic_energy(const RodModel& model, const Kinematics& kinematics, const VecX& qdot);
 double total_energy(const RodModel& model, const DynamicState& state);
 
 // The lowest `count` circular frequencies of the straight rod (q = 0) bending in the plane of n0
 // and n2 (the kappa1 coordinates), from the linearised dynamics K v = omega^2 M v (generalised
-// symmetric eigenproblem). Requires count <= N.
+// symmetric eigenproblem). M includes the rotary inertia rho I1 of the bending (a Rayleigh beam);
+// with rotational_inertia[1] = 0 it is the Euler-Bernoulli rod. Requires count <= N.
 VecX bending_frequencies(const RodModel& model, std::size_t count);
 
 }  // namespace rodvv::solvers::superhelix

@@ -9,10 +9,21 @@
 // an end force and an end moment at s = L. Dissipation: stiffness-proportional (Rayleigh) damping
 // gamma K qdot. Units: any consistent set.
 //
+// Inertia (dynamics only; statics never reads it): the line density rho S (translation) and the
+// cross-section's rotational inertia per unit length J = diag(rho I0, rho I1, rho I2) in material
+// components (index 0 = tangent n0, 1 = n1, 2 = n2): kinetic energy per unit length
+//   1/2 rho S |r_t|^2 + 1/2 Omega . J Omega,   Omega = R^T omega (material angular velocity).
+// For a solid section I0 = I1 + I2 (polar moment); elliptic_section_inertia gives J for an elliptic
+// (or, a = b, circular) section of the model's density. The default J = (1e-2, 5e-3, 5e-3) is the
+// solid circular section of radius 0.1414 (a^2 = 0.02) with the default rho S = 1 (the twist inertia
+// rho I0 = 1e-2 of the nodal rod3d model), so that M is positive definite: without J a straight
+// element's twist moves no mass and M is only semi-definite. J = 0 is the translational-only
+// Super-Helix of Bertails et al. 2006 (an Euler-Bernoulli rod).
+//
 // validate() throws rodvv::InputError naming the parameter and its range for: zero elements,
-// non-positive length / stiffness / density, a root frame that is not a rotation (|R^T R - I| or
-// |det R - 1| above 1e-10), negative damping, a non-finite entry anywhere, a wrong-sized per-element
-// natural strain, fewer than 1 or more than 8 Gauss points.
+// non-positive length / stiffness / density, a negative rotational inertia, a root frame that is not
+// a rotation (|R^T R - I| or |det R - 1| above 1e-10), negative damping, a non-finite entry anywhere,
+// a wrong-sized per-element natural strain, fewer than 1 or more than 8 Gauss points.
 #include <cstddef>
 #include <vector>
 
@@ -27,6 +38,7 @@ struct RodModel {
   Vec3 natural_strain = Vec3::Zero();     // q0, the same on every element ...
   std::vector<Vec3> natural_strain_per_element;  // ... unless this holds N values
   double line_density = 1.0;              // rho S, mass per unit length
+  Vec3 rotational_inertia = Vec3(1e-2, 5e-3, 5e-3);  // (rho I0, rho I1, rho I2) >= 0, per unit length
   Vec3 gravity = Vec3::Zero();            // acceleration of gravity g
   Vec3 root_position = Vec3::Zero();
   Mat3 root_frame = Mat3::Identity();     // columns n0, n1, n2 at s = 0
@@ -37,6 +49,11 @@ struct RodModel {
 };
 
 void validate(const RodModel& model);
+
+// (rho I0, rho I1, rho I2) of a solid elliptic section of line density rho S with semi-axis a along
+// n1 and b along n2 (S = pi a b, I1 = pi a b^3 / 4, I2 = pi a^3 b / 4, I0 = I1 + I2):
+// rho S (a^2 + b^2) / 4, rho S b^2 / 4, rho S a^2 / 4. InputError for rho S, a or b not finite and > 0.
+Vec3 elliptic_section_inertia(double line_density, double a, double b);
 
 inline double element_length(const RodModel& model) {
   return model.length / static_cast<double>(model.elements);
