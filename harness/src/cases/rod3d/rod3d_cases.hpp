@@ -11,6 +11,8 @@ extern const char* const kMethod;
 void add_helix_axial_wrench(Registry& registry);  // uniform helix held by an axial wrench
 void add_mattiasson(Registry& registry);          // Mattiasson cantilever in a tilted 3-D frame
 void add_roll_up(Registry& registry);             // end-moment roll-up in a tilted 3-D frame
+void add_modes(Registry& registry);               // bending and torsional frequencies of a cantilever
+void add_energy_in_time(Registry& registry);      // energy of implicit Euler and midpoint on a swinging rod
 void add_helical_buckling(Registry& registry);    // localized helical buckling (PyElastica's case)
 void add_bathe_bolourchi(Registry& registry);     // 45-degree bend, out-of-plane tip load
 

@@ -27,7 +27,10 @@
 // curvature vertex starts at the support: holding instead the edge that starts at the support would
 // clamp the rod half an edge too far in, an O(h) error (measured: first order on the Mattiasson
 // cantilever). The rest edge length is therefore L / (N - c/2), c the number of clamped ends, and
-// vertex i sits at arclength (i - 1/2) ebar past a clamped root, i ebar otherwise. An imposed
+// vertex i sits at arclength (i - 1/2) ebar past a clamped root, i ebar otherwise. (An extensible
+// rod's clamped half edge does not stretch: its axial compliance is that of L - ebar/2, a first-order
+// error in the axial extension and the axial frequencies - measured 1/(2N) - that the inextensible
+// rod, which every closed-form case uses, does not have.) An imposed
 // rotation of the end cross-section about its tangent (for twisting) and the end position (for end
 // displacement) are part of the end condition.
 //
