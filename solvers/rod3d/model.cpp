@@ -57,11 +57,11 @@ void validate(const RodModel& model) {
   if (model.tip.support == EndSupport::Clamped && model.root.support == EndSupport::Clamped)
     require_at_least("elements (both ends clamped)", model.elements, 3);
   if (is_inextensible(model) && model.root.support != EndSupport::Free && model.tip.support != EndSupport::Free &&
-      !((model.tip.position - model.root.position).norm() < model.length))
+      !((model.tip.position - model.root.position).norm() <= model.length * (1.0 + 1e-14)))
     throw InputError("tip.position", "invalid parameter 'tip.position': the supported ends are " +
                                          format_value((model.tip.position - model.root.position).norm()) +
-                                         " apart, the inextensible rod between them is " + format_value(model.length) +
-                                         " long (must be farther)");
+                                         " apart, farther than the inextensible rod between them is long (" +
+                                         format_value(model.length) + ")");
 }
 
 }  // namespace rodvv::solvers::rod3d

@@ -44,6 +44,9 @@ TEST(Rod3dGatesHaveTeeth, SecondOrderClaimedAsFourthOrFirstFails) {
     Case helix = named("rod3d/helix-axial-wrench");
     helix.gates = {order_gate("shape_max_error", claimed, "wrong claim")};
     EXPECT_FALSE(run_at_default_levels(helix).passed()) << claimed;
+    Case buckling = named("rod3d/lateral-torsional");
+    buckling.gates = {order_gate("critical_load_relative", claimed, "wrong claim")};
+    EXPECT_FALSE(run_at_default_levels(buckling).passed()) << claimed;
   }
 }
 

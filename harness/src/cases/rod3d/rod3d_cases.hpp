@@ -15,5 +15,6 @@ void add_modes(Registry& registry);               // bending and torsional frequ
 void add_energy_in_time(Registry& registry);      // energy of implicit Euler and midpoint on a swinging rod
 void add_helical_buckling(Registry& registry);    // localized helical buckling (PyElastica's case)
 void add_bathe_bolourchi(Registry& registry);     // 45-degree bend, out-of-plane tip load
+void add_lateral_torsional(Registry& registry);   // lateral-torsional buckling of a cantilever
 
 }  // namespace rodvv::harness::rod3d_cases
