@@ -44,7 +44,7 @@ Case make_case(std::string family, CaseText text, Parameters parameters, Resolut
   Case c;
   c.info.name = std::move(text.name);
   c.info.family = std::move(family);
-  c.info.group = c.info.name;
+  c.info.group = text.group.empty() ? c.info.name : std::move(text.group);
   c.info.title = std::move(text.title);
   c.info.physics = std::move(text.physics);
   c.info.reference = std::move(text.reference);

@@ -32,6 +32,7 @@ GateSpec measured_bound(const std::string& metric, double at_finest, double h_fi
 
 struct CaseText {
   std::string name, title, physics, reference, citation, method;
+  std::string group = {};  // cases compared side by side (report overlays); empty: the case's own name
 };
 Case make_case(std::string family, CaseText text, Parameters parameters, Resolution resolution,
                std::vector<MetricSpec> metrics, std::vector<GateSpec> gates, LevelRunner runner);

@@ -110,7 +110,7 @@ void add_helix_axial_wrench(Registry& registry) {
        "the dead force and moment of the closed form, natural twist u_hat0 = tau - M_t / C.",
        "kappa = sin^2(a)/R, tau = sin(a)cos(a)/R; n = F e_z, F = (M_t - B tau) sin(a)/R; material frame = Frenet frame "
        "(t, b, -N); H = F cos(a) + B kappa^2/2 + M_t tau - M_t^2/(2C)",
-       "Love 1944 §§270-271; PHYSICS.md §7.1", kMethod},
+       "Love 1944 §§270-271; PHYSICS.md §7.1", kMethod, "rod-3d/helix-axial-wrench"},
       {make_parameter("B", 1.3, 0.0, 1e12, true, false, "force length^2", "bending stiffness (both axes)"),
        make_parameter("C", 0.9, 0.0, 1e12, true, false, "force length^2", "twisting stiffness"),
        make_parameter("radius", 0.7, 0.0, 1e6, true, false, "length", "helix radius R"),

@@ -95,7 +95,7 @@ void add_mattiasson(Registry& registry) {
        "Inextensible Kirchhoff rod clamped with a general tilted frame; dead tip load P along the clamp's m2 so "
        "that it bends about m1 (EI1 = EI; EI2 = 2.3 EI, GJ = 0.7 EI); alpha = P L^2 / EI1.",
        "Elliptic closed form of the tip displacements (Bisshopp & Drucker 1945; Mattiasson 1981); H = P sin(phi_L)",
-       "PHYSICS.md §3.5; PRIOR_ART.md §4.1", kMethod},
+       "PHYSICS.md §3.5; PRIOR_ART.md §4.1", kMethod, "rod-3d/mattiasson-2"},
       {make_parameter("L", 1.3, 0.0, 1e6, true, false, "length", "rod length"),
        make_parameter("EI", 1.7, 0.0, 1e12, true, false, "force length^2", "bending stiffness EI1 (EI2 = 2.3 EI, GJ = 0.7 EI)"),
        make_parameter("alpha", 2.0, 0.0, 10.0, true, false, "", "P L^2 / EI1")},

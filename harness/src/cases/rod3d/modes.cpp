@@ -154,7 +154,8 @@ void add_modes(Registry& registry) {
        "Rayleigh, Theory of Sound; Meirovitch, Fundamentals of Vibrations; ALGORITHMS.md §5",
        "discrete elastic rod linearised about its equilibrium (solvers/rod3d/linearized.hpp): the exact (AutoDiff) "
        "static Jacobian restricted to the free dofs, projected on the null space of the inextensibility constraints "
-       "in the mass metric (column-pivoted QR), dense symmetric eigensolver"},
+       "in the mass metric (column-pivoted QR), dense symmetric eigensolver",
+       "rod-3d/modes"},
       {make_parameter("L", 1.3, 0.0, 1e6, true, false, "length", "rod length"),
        make_parameter("GJ", 0.55, 0.0, 1e12, true, false, "force length^2", "twisting stiffness"),
        make_parameter("EI1", 1.7, 0.0, 1e12, true, false, "force length^2", "bending stiffness about m1"),

@@ -86,7 +86,7 @@ void add_roll_up(Registry& registry) {
        "Inextensible rod clamped with a tilted frame; dead end moment M = turns 2 pi EI / L about an axis in the "
        "cross-section at axis_angle from m1 (isotropic bending EI, GJ = 0.7 EI).",
        "r(s) = r0 + (EI/M) sin(Ms/EI) t0 + (EI/M)(1 - cos(Ms/EI)) a x t0; H = M^2/(2EI)",
-       "Exact circle under a pure end moment (Euler); PHYSICS.md §3.4; PRIOR_ART.md §4.3 (Simo-Vu-Quoc)", kMethod},
+       "Exact circle under a pure end moment (Euler); PHYSICS.md §3.4; PRIOR_ART.md §4.3 (Simo-Vu-Quoc)", kMethod, "rod-3d/roll-up"},
       {make_parameter("L", 2.2, 0.0, 1e6, true, false, "length", "rod length"),
        make_parameter("EI", 0.8, 0.0, 1e12, true, false, "force length^2", "bending stiffness (both axes; GJ = 0.7 EI)"),
        make_parameter("turns", 1.0, 0.0, 1.0, true, false, "", "M L / (2 pi EI)"),
