@@ -1,6 +1,6 @@
 // Google Benchmark for the nodal 3-D rod (solvers/rod3d, a discrete elastic rod).
 //  - BM_NewtonIteration: one Newton iteration's work at a bent, twisted state - the banded
-//    residual and Jacobian (AutoDiff stencils), the banded LU and the solve - vs N = 32 .. 4096,
+//    residual and Jacobian (second-order jets of the stencils), the banded LU and the solve - vs N = 32 .. 4096,
 //    with Google Benchmark's complexity fit (issue 11 target: fit exponent <= 1.1, i.e. O(N)).
 //  - BM_Residual: the residual alone (each line-search trial evaluates one), same N.
 //  - BM_HelicalBuckling: the whole rod3d/helical-buckling level as `rodvv sweep` runs it (PyElastica's

@@ -3,22 +3,50 @@
 #include <array>
 #include <cmath>
 
+#include <Eigen/Core>
 #include <Eigen/Geometry>
-#include <unsupported/Eigen/AutoDiff>
 
 #include "rodvv/common/errors.hpp"
+#include "taylor2.hpp"
+
+// The bending-twisting energy of the discrete elastic rod (Bergou, Wardetzky, Robinson, Audoly &
+// Grinspun, "Discrete Elastic Rods", ACM TOG 27(3) 63, 2008; with the reference frame carried by
+// time-parallel transport and the reference twist bookkeeping of Bergou, Audoly, Vouga, Wardetzky &
+// Grinspun, "Discrete Viscous Threads", ACM TOG 29(4) 116, 2010) is a sum over interior vertices i
+// of stencil energies
+//     E_i = 1/2 (k - k0)^T K (k - k0) / lbar,   K = diag(GJ, EI1, EI2),   k0 = lbar (natural strains),
+// with k = (twist angle, kb.m1avg, kb.m2avg) the integrated strains of the 11 stencil dofs
+// z = (x_{i-1}, theta^{i-1}, x_i, theta^i, x_{i+1}). Newton needs dE_i/dz and d2E_i/dz2 exactly.
+//
+// How they are computed (the hot loop of every rod3d solve: it was nested Eigen AutoDiffScalar over
+// the 11 dofs, ~70 us per stencil Hessian and ~2 us per gradient; now ~3 us and ~0.4 us - see
+// bench/bench_rod3d.cpp, BM_NewtonIteration and BM_Residual):
+//  1. k depends on the positions only through the edge vectors e = x_i - x_{i-1}, f = x_{i+1} - x_i,
+//     so k is differentiated in the 8 reduced variables w = (e, f, theta^{i-1}, theta^i) and the
+//     result mapped back with the constant matrix A = dw/dz (entries 0, +-1): g_z = A^T g_w,
+//     H_z = A^T H_w A - exact, w being linear in z.
+//  2. Each quantity is differentiated only in the variables it depends on: an edge's frame (unit
+//     tangent, transported reference director, binormal) in its own edge vector (3 variables); the
+//     curvature binormal, its components on the frames and the reference twist in (e, f) (6); only
+//     the last step, which brings in the material angles, in all 8 (see "exact derivatives" below).
+//  3. Second-order forward jets (taylor2.hpp: value, gradient, symmetric Hessian in one pass per
+//     operation) give k_a, its gradient J_a and Hessian Hk_a; then, with s = K (k - k0) / lbar,
+//         g_w = J^T s,   H_w = J^T (K / lbar) J + sum_a s_a Hk_a
+//     (the Gauss-Newton part plus the curvature of the strain map - both exact).
+// The gradient-only paths (residuals) run the same code with first-order jets, the energy with
+// doubles: the strain formulas are written once, generic in the scalar type.
+// Checks (tests/solvers/test_rod3d.cpp): the jets against finite differences, the stencil gradient
+// and Hessian against the previous nested-AutoDiff implementation (to 1e-12 relative), the global
+// residual and Jacobian against finite differences of the energy and the residual.
 
 namespace rodvv::solvers::rod3d {
 
 namespace {
 
 constexpr int kStencil = 11;  // x_{i-1}, theta^{i-1}, x_i, theta^i, x_{i+1}
+constexpr int kReduced = 8;   // w = (e = x_i - x_{i-1}, f = x_{i+1} - x_i, theta^{i-1}, theta^i)
 using StencilVector = Eigen::Matrix<double, kStencil, 1>;
 using StencilMatrix = Eigen::Matrix<double, kStencil, kStencil>;
-using Inner = Eigen::AutoDiffScalar<StencilVector>;
-using Outer = Eigen::AutoDiffScalar<Eigen::Matrix<Inner, kStencil, 1>>;
-template <typename T>
-using V3 = Eigen::Matrix<T, 3, 1>;
 
 // What a vertex stencil needs from the state it is linearised about.
 struct VertexStencil {
@@ -26,56 +54,214 @@ struct VertexStencil {
   double reference_twist = 0.0;
 };
 
+// ---- generic 3-vector algebra ----------------------------------------------------------------------
+// std::array rather than Eigen vectors so that any scalar works without Eigen NumTraits, and so that
+// constant vectors (V3<double>) enter products as constants: a double times a jet is a scaling, a jet
+// times a jet a full second-order product. Every result is converted to the named scalar T at once,
+// so the helpers also accept scalars whose arithmetic returns expression templates.
 template <typename T>
-V3<T> transport(const V3<T>& from, const V3<T>& to, const V3<T>& v) {
-  const V3<T> b = from.cross(to);
-  const T c = from.dot(to);
-  return c * v + b.cross(v) + (b.dot(v) / (T(1.0) + c)) * b;
+using V3 = std::array<T, 3>;
+
+V3<double> v3(const Vec3& v) { return {v[0], v[1], v[2]}; }
+
+template <typename T, typename A, typename B>
+T vdot(const V3<A>& a, const V3<B>& b) {
+  return T(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
+}
+template <typename T, typename A, typename B>
+V3<T> vcross(const V3<A>& a, const V3<B>& b) {
+  return {T(a[1] * b[2] - a[2] * b[1]), T(a[2] * b[0] - a[0] * b[2]), T(a[0] * b[1] - a[1] * b[0])};
+}
+template <typename T, typename S, typename A>
+V3<T> vscale(const S& s, const V3<A>& a) {
+  return {T(s * a[0]), T(s * a[1]), T(s * a[2])};
+}
+template <typename T>
+V3<T> vadd(const V3<T>& a, const V3<T>& b) {
+  return {T(a[0] + b[0]), T(a[1] + b[1]), T(a[2] + b[2])};
 }
 
-template <typename T>
-V3<T> constant_vector(const Vec3& v) {
-  return V3<T>(T(v[0]), T(v[1]), T(v[2]));
+// The parallel transport (the rotation about from x to taking the unit vector `from` to the unit
+// vector `to`) applied to v, given b = from x to and c = from . to:  c v + b x v + (b.v / (1 + c)) b.
+template <typename T, typename V>
+V3<T> rotate(const V3<T>& b, const T& c, const V3<V>& v) {
+  const T s = T(vdot<T>(b, v) / (1.0 + c));
+  return vadd(vadd(vscale<T>(c, v), vcross<T>(b, v)), vscale<T>(s, b));
 }
 
-// (twist angle, kb.m1avg, kb.m2avg) of the stencil z = (x_{i-1}, th_{i-1}, x_i, th_i, x_{i+1}).
+// ---- the strains of a stencil (written once for every scalar) -------------------------------------
+
+// One edge's unit tangent t, reference director a and a's partner t x a, as functions of the edge
+// vector alone: a is the state's reference director carried from the state's tangent to t by
+// parallel transport (time-parallel transport, Bergou et al. 2010).
 template <typename T>
-V3<T> stencil_strain(const Eigen::Matrix<T, kStencil, 1>& z, const VertexStencil& st) {
+struct EdgeFrame {
+  V3<T> t, a, b;
+};
+
+template <typename T>
+EdgeFrame<T> edge_frame(const V3<T>& edge, const Vec3& t_state, const Vec3& a_state) {
+  using std::sqrt;
+  const T length = sqrt(vdot<T>(edge, edge));
+  EdgeFrame<T> frame;
+  frame.t = {T(edge[0] / length), T(edge[1] / length), T(edge[2] / length)};
+  const V3<double> from = v3(t_state);
+  frame.a = rotate<T>(vcross<T>(from, frame.t), vdot<T>(from, frame.t), v3(a_state));
+  frame.b = vcross<T>(frame.t, frame.a);
+  return frame;
+}
+
+// The integrated strains k = (twist angle, kb.m1avg, kb.m2avg) of a vertex (Bergou et al. 2008:
+// curvature binormal kb = 2 te x tf / (1 + te.tf); material directors m1 = cos(theta) a + sin(theta) b,
+// m2 = cos(theta) b - sin(theta) a on each edge, here averaged over the two edges; twist =
+// theta^i - theta^{i-1} + reference twist), in two stages so that the jets can be staged by what
+// each quantity depends on (see the top of the file):
+//   bend_twist       - the terms that depend on the two edge frames but not on the material angles:
+//                      kb.a and kb.b of both edges, and the reference twist;
+//   material_strains - k from those and the material angles, kb distributed over the sum:
+//                        kb.m1avg = 1/2 kb.(m1^{i-1} + m1^i)
+//                                 = 1/2 (cos th0 kb.ae + sin th0 kb.be + cos th1 kb.af + sin th1 kb.bf),
+//                      and likewise for m2.
+// These are the formulas of the previous single-function stencil_strain (now in the test file as the
+// reference) with kb distributed over the sum and te x tf, te.tf shared between kb and the transport
+// te -> tf: the same math and the same chart conventions (transported reference directors, asin of
+// the reference-twist increment), the values differing only by round-off.
+template <typename T>
+struct BendTwist {
+  T kb_ae, kb_be, kb_af, kb_bf;  // kb . (a, b) of edges i-1 (e) and i (f)
+  T reference_twist;             // continued from the state's
+};
+
+template <typename T>
+BendTwist<T> bend_twist(const EdgeFrame<T>& e, const EdgeFrame<T>& f, double state_reference_twist) {
   using std::asin;
-  using std::cos;
-  using std::sin;
-  const V3<T> x0 = z.template segment<3>(0), x1 = z.template segment<3>(4), x2 = z.template segment<3>(8);
-  const T th0 = z[3], th1 = z[7];
-  const V3<T> e = x1 - x0, f = x2 - x1;
-  const V3<T> te = e / e.norm(), tf = f / f.norm();
-  // Reference directors carried from the state's tangents to the trial ones (time-parallel transport).
-  const V3<T> ae = transport<T>(constant_vector<T>(st.t_prev), te, constant_vector<T>(st.a_prev));
-  const V3<T> af = transport<T>(constant_vector<T>(st.t_next), tf, constant_vector<T>(st.a_next));
-  const V3<T> be = te.cross(ae), bf = tf.cross(af);
-  const T ce = cos(th0), se = sin(th0), cf = cos(th1), sf = sin(th1);
-  const V3<T> m1 = ce * ae + se * be + cf * af + sf * bf;   // 2 x the average m1
-  const V3<T> m2 = ce * be - se * ae + cf * bf - sf * af;   // 2 x the average m2
-  const V3<T> kb = (T(2.0) / (T(1.0) + te.dot(tf))) * te.cross(tf);
+  const V3<T> b = vcross<T>(e.t, f.t);  // te x tf, shared by kb and the transport te -> tf
+  const T c = vdot<T>(e.t, f.t);
+  const V3<T> kb = vscale<T>(T(2.0 / (1.0 + c)), b);
   // Reference twist = the state's value + the signed angle, about tf, from the space-parallel
   // transport of ae (turned back by the state's reference twist) to af. Near the state this angle
   // is small, so asin of its sine is exact and smooth (|angle| < pi/2 is checked on every update).
-  const T c0 = T(std::cos(st.reference_twist)), s0 = T(std::sin(st.reference_twist));
-  const V3<T> p = transport<T>(te, tf, ae);
-  const V3<T> p_turned = c0 * p + s0 * tf.cross(p);
-  const T twist = th1 - th0 + T(st.reference_twist) + asin(p_turned.cross(af).dot(tf));
-  return V3<T>(twist, T(0.5) * kb.dot(m1), T(0.5) * kb.dot(m2));
+  const double c0 = std::cos(state_reference_twist), s0 = std::sin(state_reference_twist);
+  const V3<T> p = rotate<T>(b, c, e.a);
+  const V3<T> p_turned = vadd(vscale<T>(c0, p), vscale<T>(s0, vcross<T>(f.t, p)));
+  return {vdot<T>(kb, e.a), vdot<T>(kb, e.b), vdot<T>(kb, f.a), vdot<T>(kb, f.b),
+          T(state_reference_twist + asin(vdot<T>(vcross<T>(p_turned, f.a), f.t)))};
 }
 
 template <typename T>
-T stencil_energy(const Eigen::Matrix<T, kStencil, 1>& z, const VertexStencil& st, const Vec3& stiffness,
-                 const Vec3& natural_integrated, double voronoi) {
-  const V3<T> k = stencil_strain<T>(z, st);
-  T energy(0.0);
-  for (int a = 0; a < 3; ++a) {
-    const T d = k[a] - T(natural_integrated[a]);
-    energy += T(0.5 * stiffness[a] / voronoi) * d * d;
+V3<T> material_strains(const BendTwist<T>& bt, const T& th0, const T& th1) {
+  using std::cos;
+  using std::sin;
+  const T ce = cos(th0), se = sin(th0), cf = cos(th1), sf = sin(th1);
+  return {T(th1 - th0 + bt.reference_twist),
+          T(0.5 * (ce * bt.kb_ae + se * bt.kb_be + cf * bt.kb_af + sf * bt.kb_bf)),
+          T(0.5 * (ce * bt.kb_be - se * bt.kb_ae + cf * bt.kb_bf - sf * bt.kb_af))};
+}
+
+// The strains at plain values (energy, integrated_strains).
+Vec3 stencil_strain_value(const StencilVector& z, const VertexStencil& st) {
+  const V3<double> e{z[4] - z[0], z[5] - z[1], z[6] - z[2]}, f{z[8] - z[4], z[9] - z[5], z[10] - z[6]};
+  const V3<double> k = material_strains<double>(
+      bend_twist<double>(edge_frame<double>(e, st.t_prev, st.a_prev), edge_frame<double>(f, st.t_next, st.a_next),
+                         st.reference_twist),
+      z[3], z[7]);
+  return Vec3(k[0], k[1], k[2]);
+}
+
+// ---- exact derivatives with jets -------------------------------------------------------------------
+//
+// Reduced variables w = (e, f, theta^{i-1}, theta^i) (8), edge variables (e) and (f) (3 each):
+//   edge_frame       Jet<3>  per edge, lifted to Jet<6> at offset 0 (e) or 3 (f);
+//   bend_twist       Jet<6>  (e, f), lifted to Jet<8> at offset 0;
+//   material_strains Jet<8>  with theta^{i-1}, theta^i the variables 6 and 7.
+// The bulk of the work (bend_twist) thus runs on 6 variables (21 Hessian entries) and the frames on 3.
+
+constexpr int kPair = 6;  // (e, f)
+
+// w = A z: reduced variable w_slot enters stencil dof p with the given sign (x_i enters e and f).
+struct ReducedTerm {
+  int slot;
+  double sign;
+};
+struct ReducedTerms {
+  int count;
+  std::array<ReducedTerm, 2> term;
+};
+constexpr std::array<ReducedTerms, kStencil> kReducedOf{{
+    {1, {{{0, -1.0}, {}}}}, {1, {{{1, -1.0}, {}}}}, {1, {{{2, -1.0}, {}}}},                     // x_{i-1}: -e
+    {1, {{{6, 1.0}, {}}}},                                                                      // theta^{i-1}
+    {2, {{{0, 1.0}, {3, -1.0}}}}, {2, {{{1, 1.0}, {4, -1.0}}}}, {2, {{{2, 1.0}, {5, -1.0}}}},  // x_i: e - f
+    {1, {{{7, 1.0}, {}}}},                                                                      // theta^i
+    {1, {{{3, 1.0}, {}}}}, {1, {{{4, 1.0}, {}}}}, {1, {{{5, 1.0}, {}}}},                        // x_{i+1}: f
+}};
+
+template <int M, int N, int O>
+EdgeFrame<taylor2::Jet<M, O>> lift_frame(const EdgeFrame<taylor2::Jet<N, O>>& frame, int offset) {
+  EdgeFrame<taylor2::Jet<M, O>> r;
+  for (std::size_t q = 0; q < 3; ++q) {
+    r.t[q] = taylor2::lift<M>(frame.t[q], offset);
+    r.a[q] = taylor2::lift<M>(frame.a[q], offset);
+    r.b[q] = taylor2::lift<M>(frame.b[q], offset);
   }
-  return energy;
+  return r;
+}
+
+// Gradient (and, for Order 2, Hessian) of the stencil energy with respect to its 11 dofs z.
+template <int Order>
+void stencil_derivatives(const StencilVector& z, const VertexStencil& st, const Vec3& stiffness,
+                         const Vec3& natural_integrated, double voronoi, StencilVector& gradient,
+                         StencilMatrix* hessian) {
+  using EdgeJet = taylor2::Jet<3, Order>;
+  using PairJet = taylor2::Jet<kPair, Order>;
+  using Jet = taylor2::Jet<kReduced, Order>;
+  V3<EdgeJet> e, f;
+  for (int q = 0; q < 3; ++q) {
+    e[std::size_t(q)] = EdgeJet::variable(z[4 + q] - z[q], q);
+    f[std::size_t(q)] = EdgeJet::variable(z[8 + q] - z[4 + q], q);
+  }
+  const BendTwist<PairJet> bt = bend_twist<PairJet>(lift_frame<kPair>(edge_frame<EdgeJet>(e, st.t_prev, st.a_prev), 0),
+                                                    lift_frame<kPair>(edge_frame<EdgeJet>(f, st.t_next, st.a_next), 3),
+                                                    st.reference_twist);
+  const BendTwist<Jet> lifted{taylor2::lift<kReduced>(bt.kb_ae, 0), taylor2::lift<kReduced>(bt.kb_be, 0),
+                              taylor2::lift<kReduced>(bt.kb_af, 0), taylor2::lift<kReduced>(bt.kb_bf, 0),
+                              taylor2::lift<kReduced>(bt.reference_twist, 0)};
+  const V3<Jet> k = material_strains<Jet>(lifted, Jet::variable(z[3], 6), Jet::variable(z[7], 7));
+
+  // E = sum_a 1/2 w_a (k_a - k0_a)^2 with w_a = K_a / lbar (the vertex-based bending and twisting
+  // energies of Bergou et al. 2008):  g_w = sum_a w_a d_a J_a,  H_w = sum_a w_a (J_a J_a^T + d_a Hk_a).
+  std::array<double, kReduced> gw{};
+  std::array<double, Jet::kHessianSize> hw{};  // packed like a Jet's Hessian
+  for (std::size_t a = 0; a < 3; ++a) {
+    const double w = stiffness[Eigen::Index(a)] / voronoi, d = k[a].v - natural_integrated[Eigen::Index(a)];
+    for (int m = 0; m < kReduced; ++m) gw[m] += w * d * k[a].g[m];
+    if constexpr (Order == 2) {
+      int slot = 0;
+      for (int n = 0; n < kReduced; ++n)
+        for (int m = n; m < kReduced; ++m, ++slot) hw[slot] += w * (k[a].g[m] * k[a].g[n] + d * k[a].h[slot]);
+    }
+  }
+  // Back to z: g_z = A^T g_w, H_z = A^T H_w A (A has at most two nonzeros, +-1, per column).
+  for (int p = 0; p < kStencil; ++p) {
+    const auto& rp = kReducedOf[std::size_t(p)];
+    double sum = 0.0;
+    for (int s = 0; s < rp.count; ++s) sum += rp.term[s].sign * gw[rp.term[s].slot];
+    gradient[p] = sum;
+  }
+  if constexpr (Order == 2) {
+    const auto hw_at = [&](int m, int n) { return m >= n ? hw[Jet::packed(m, n)] : hw[Jet::packed(n, m)]; };
+    for (int q = 0; q < kStencil; ++q) {
+      const auto& rq = kReducedOf[std::size_t(q)];
+      for (int p = q; p < kStencil; ++p) {
+        const auto& rp = kReducedOf[std::size_t(p)];
+        double sum = 0.0;
+        for (int t = 0; t < rq.count; ++t)
+          for (int s = 0; s < rp.count; ++s)
+            sum += rp.term[s].sign * rq.term[t].sign * hw_at(rp.term[s].slot, rq.term[t].slot);
+        (*hessian)(p, q) = sum;
+        (*hessian)(q, p) = sum;
+      }
+    }
+  }
 }
 
 // One evaluation: the chart of `base` (its tangents, reference directors and twists), at the
@@ -140,23 +326,12 @@ struct Context {
 };
 
 void stencil_gradient_hessian(const Context& c, std::size_t i, StencilVector& gradient, StencilMatrix* hessian) {
-  const StencilVector z0 = c.stencil_dofs(i);
-  if (!hessian) {
-    Eigen::Matrix<Inner, kStencil, 1> z;
-    for (int k = 0; k < kStencil; ++k) z[k] = Inner(z0[k], kStencil, k);
-    const Inner e = stencil_energy<Inner>(z, c.stencil(i), c.model.stiffness, c.natural_integrated(), c.voronoi());
-    gradient = e.derivatives();
-    return;
-  }
-  Eigen::Matrix<Outer, kStencil, 1> z;
-  for (int k = 0; k < kStencil; ++k) {
-    z[k].value() = Inner(z0[k], kStencil, k);
-    z[k].derivatives() = Eigen::Matrix<Inner, kStencil, 1>::Constant(Inner(0.0));
-    z[k].derivatives()[k] = Inner(1.0);
-  }
-  const Outer e = stencil_energy<Outer>(z, c.stencil(i), c.model.stiffness, c.natural_integrated(), c.voronoi());
-  gradient = e.value().derivatives();
-  for (int a = 0; a < kStencil; ++a) hessian->row(a) = e.derivatives()[a].derivatives().transpose();
+  if (hessian)
+    stencil_derivatives<2>(c.stencil_dofs(i), c.stencil(i), c.model.stiffness, c.natural_integrated(), c.voronoi(),
+                           gradient, hessian);
+  else
+    stencil_derivatives<1>(c.stencil_dofs(i), c.stencil(i), c.model.stiffness, c.natural_integrated(), c.voronoi(),
+                           gradient, nullptr);
 }
 
 using Triplets = std::vector<Eigen::Triplet<double>>;
@@ -263,7 +438,7 @@ std::vector<Vec3> integrated_strains(const RodModel& model, const RodState& stat
   validate(model);
   const Context c(model, state);
   std::vector<Vec3> k(model.elements + 1, Vec3::Zero());
-  for (std::size_t i = 1; i < model.elements; ++i) k[i] = stencil_strain<double>(c.stencil_dofs(i), c.stencil(i));
+  for (std::size_t i = 1; i < model.elements; ++i) k[i] = stencil_strain_value(c.stencil_dofs(i), c.stencil(i));
   return k;
 }
 
@@ -273,7 +448,7 @@ EnergyParts energy(const RodModel& model, const RodState& state) {
   EnergyParts parts;
   const Vec3 natural = c.natural_integrated();
   for (std::size_t i = 1; i < model.elements; ++i) {
-    const Vec3 k = stencil_strain<double>(c.stencil_dofs(i), c.stencil(i)) - natural;
+    const Vec3 k = stencil_strain_value(c.stencil_dofs(i), c.stencil(i)) - natural;
     parts.twisting += 0.5 * model.stiffness[0] * k[0] * k[0] / c.voronoi();
     parts.bending += 0.5 * (model.stiffness[1] * k[1] * k[1] + model.stiffness[2] * k[2] * k[2]) / c.voronoi();
   }
@@ -349,5 +524,39 @@ std::vector<Vec3> elastic_vertex_forces(const RodModel& model, const RodState& s
   for (std::size_t i = 0; i <= model.elements; ++i) forces[i] = r.segment<3>(Eigen::Index(c.layout.vertex(i)));
   return forces;
 }
+
+// ---- test hook -------------------------------------------------------------------------------------
+
+namespace detail {
+
+// Not part of the public API: tests/solvers/test_rod3d.cpp declares it and compares it with the
+// previous implementation (nested Eigen AutoDiffScalar over the 11 stencil dofs, kept there) and
+// with finite differences. The gradient and, for order 2, the Hessian of the bending-twisting energy
+// of interior vertex `vertex`'s stencil (dofs x_{i-1}, theta^{i-1}, x_i, theta^i, x_{i+1}) at
+// base + dz in the chart of base (dz empty: at base), by the production jets of that order (order 1:
+// the residual's path, hessian returned empty).
+void stencil_derivatives_for_testing(const RodModel& model, const RodState& base, const VecX& dz, std::size_t vertex,
+                                     int order, VecX& gradient, Eigen::MatrixXd& hessian) {
+  validate(model);
+  const Context c(model, base, dz.size() ? &dz : nullptr);
+  if (vertex < 1 || vertex >= model.elements)
+    throw InputError("vertex", "invalid parameter 'vertex': must be an interior vertex 1 .. N-1");
+  if (order != 1 && order != 2) throw InputError("order", "invalid parameter 'order': must be 1 or 2");
+  StencilVector g;
+  StencilMatrix h;
+  const StencilVector z = c.stencil_dofs(vertex);
+  const VertexStencil st = c.stencil(vertex);
+  if (order == 2)
+    stencil_derivatives<2>(z, st, model.stiffness, c.natural_integrated(), c.voronoi(), g, &h);
+  else
+    stencil_derivatives<1>(z, st, model.stiffness, c.natural_integrated(), c.voronoi(), g, nullptr);
+  gradient = g;
+  if (order == 2)
+    hessian = h;
+  else
+    hessian.resize(0, 0);
+}
+
+}  // namespace detail
 
 }  // namespace rodvv::solvers::rod3d

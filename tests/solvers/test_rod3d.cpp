@@ -237,3 +237,271 @@ TEST(Rod3dStatics, BadInputNamesTheParameter) {
 }
 
 }  // namespace
+
+// ---- second-order jets and the stencil derivatives -------------------------------------------------
+// (solvers/rod3d/taylor2.hpp and discrete_energy.cpp.) Included here, at the end, because these
+// tests were appended to the file: the private jet header (not in the public include directory) and
+// Eigen's AutoDiffScalar for the previous implementation of the stencil derivatives, kept below as
+// the reference.
+#include <array>
+
+#include <unsupported/Eigen/AutoDiff>
+
+#include "../../solvers/rod3d/taylor2.hpp"
+
+namespace rodvv::solvers::rod3d::detail {
+// Test hook defined in solvers/rod3d/discrete_energy.cpp (not public API): gradient and, for order 2,
+// Hessian of the bending-twisting energy of interior vertex `vertex`'s stencil (x_{i-1}, theta^{i-1},
+// x_i, theta^i, x_{i+1}) at base + dz in the chart of base, by the production jets of that order.
+void stencil_derivatives_for_testing(const RodModel& model, const RodState& base, const VecX& dz, std::size_t vertex,
+                                     int order, VecX& gradient, Eigen::MatrixXd& hessian);
+}  // namespace rodvv::solvers::rod3d::detail
+
+namespace {
+
+namespace t2 = rodvv::solvers::rod3d::taylor2;
+
+// A function of 4 variables using every jet operation: jet +, -, *, / jet; unary -; jet +, -, *, /
+// double and double +, -, *, / jet; sqrt, sin, cos, asin; and a 2-variable sub-computation lifted
+// into the 4 variables (staging).
+template <int Order>
+t2::Jet<4, Order> all_operations(const std::array<double, 4>& w) {
+  using J = t2::Jet<4, Order>;
+  using J2 = t2::Jet<2, Order>;
+  const J x = J::variable(w[0], 0), y = J::variable(w[1], 1), z = J::variable(w[2], 2), u = J::variable(w[3], 3);
+  const J2 zs = J2::variable(w[2], 0), us = J2::variable(w[3], 1);
+  const J lifted = t2::lift<4>(sqrt(2.0 + zs * us) - us / zs, 2);  // a function of (z, u) only
+  return sin(x * y) / (2.0 + cos(z)) + sqrt(1.5 + x * x + u * u) * asin(0.3 * y - z * 0.2) - u / x + 3.0 -
+         (2.0 - y) * z + 0.5 / (1.0 + u * u) - (-x) * 0.7 + (x - 1.0) / 4.0 + lifted * y;
+}
+
+TEST(Rod3dJets, DerivativesOfEveryOperationMatchCentralDifferences) {
+  const std::array<double, 4> w0{0.7, -0.4, 1.1, 0.3};
+  const auto f = all_operations<2>(w0);
+  const auto f1 = all_operations<1>(w0);
+  // The first-order jet runs the same value and gradient arithmetic as the second-order one.
+  EXPECT_EQ(f1.v, f.v);
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(f1.g[std::size_t(i)], f.g[std::size_t(i)]) << i;
+  // Central differences of step h: truncation h^2 |f'''| / 6 and round-off eps |f| / h. Here |f| ~ 5
+  // and the third derivatives are below ~50 (the steepest term, u / x at x = 0.7, has 6 u / x^4 ~ 7),
+  // so h = 1e-5 gives ~1e-9 + ~1e-10 on derivatives of size ~1 - 10; the bound 1e-7 (relative to
+  // the largest derivative, at least 1) leaves a factor ~100. The Hessian is checked the same way
+  // against differences of the (exact, first-order) gradient.
+  const double h = 1e-5;
+  double grad_scale = 1.0, hess_scale = 1.0;
+  for (int i = 0; i < 4; ++i) {
+    grad_scale = std::max(grad_scale, std::abs(f.g[std::size_t(i)]));
+    for (int j = 0; j < 4; ++j) hess_scale = std::max(hess_scale, std::abs(f.hessian(i, j)));
+  }
+  double grad_error = 0.0, hess_error = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    auto plus = w0, minus = w0;
+    plus[std::size_t(k)] += h;
+    minus[std::size_t(k)] -= h;
+    const auto fp = all_operations<1>(plus), fm = all_operations<1>(minus);
+    grad_error = std::max(grad_error, std::abs((fp.v - fm.v) / (2.0 * h) - f.g[std::size_t(k)]));
+    for (int i = 0; i < 4; ++i)
+      hess_error = std::max(hess_error,
+                            std::abs((fp.g[std::size_t(i)] - fm.g[std::size_t(i)]) / (2.0 * h) - f.hessian(i, k)));
+  }
+  EXPECT_LT(grad_error, 1e-7 * grad_scale) << "gradient error " << grad_error << " of scale " << grad_scale;
+  EXPECT_LT(hess_error, 1e-7 * hess_scale) << "Hessian error " << hess_error << " of scale " << hess_scale;
+  // A product of two independent variables has the exact Hessian [[0, 1], [1, 0]], and a lifted jet
+  // has no derivatives outside its variables.
+  using J2 = t2::Jet<2>;
+  const auto xy = J2::variable(0.3, 0) * J2::variable(-1.7, 1);
+  EXPECT_EQ(xy.hessian(0, 0), 0.0);
+  EXPECT_EQ(xy.hessian(1, 0), 1.0);
+  EXPECT_EQ(xy.hessian(0, 1), 1.0);
+  EXPECT_EQ(xy.hessian(1, 1), 0.0);
+  const auto lifted = t2::lift<5>(xy, 2);
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_EQ(lifted.g[std::size_t(i)], i == 2 ? -1.7 : i == 3 ? 0.3 : 0.0) << i;
+    for (int j = 0; j < 5; ++j)
+      EXPECT_EQ(lifted.hessian(i, j), (i == 2 && j == 3) || (i == 3 && j == 2) ? 1.0 : 0.0) << i << ", " << j;
+  }
+}
+
+// The previous implementation of the stencil derivatives, verbatim (it was discrete_energy.cpp up
+// to the jets): the stencil energy differentiated twice by nested Eigen AutoDiffScalar over the 11
+// stencil dofs - an independent reference for the jets, the staging and the reduced variables.
+namespace previous {
+
+constexpr int kStencil = 11;  // x_{i-1}, theta^{i-1}, x_i, theta^i, x_{i+1}
+using StencilVector = Eigen::Matrix<double, kStencil, 1>;
+using StencilMatrix = Eigen::Matrix<double, kStencil, kStencil>;
+using Inner = Eigen::AutoDiffScalar<StencilVector>;
+using Outer = Eigen::AutoDiffScalar<Eigen::Matrix<Inner, kStencil, 1>>;
+template <typename T>
+using V3 = Eigen::Matrix<T, 3, 1>;
+
+struct VertexStencil {
+  Vec3 t_prev, a_prev, t_next, a_next;  // tangents and reference directors of edges i-1, i
+  double reference_twist = 0.0;
+};
+
+template <typename T>
+V3<T> transport(const V3<T>& from, const V3<T>& to, const V3<T>& v) {
+  const V3<T> b = from.cross(to);
+  const T c = from.dot(to);
+  return c * v + b.cross(v) + (b.dot(v) / (T(1.0) + c)) * b;
+}
+
+template <typename T>
+V3<T> constant_vector(const Vec3& v) {
+  return V3<T>(T(v[0]), T(v[1]), T(v[2]));
+}
+
+template <typename T>
+V3<T> stencil_strain(const Eigen::Matrix<T, kStencil, 1>& z, const VertexStencil& st) {
+  using std::asin;
+  using std::cos;
+  using std::sin;
+  const V3<T> x0 = z.template segment<3>(0), x1 = z.template segment<3>(4), x2 = z.template segment<3>(8);
+  const T th0 = z[3], th1 = z[7];
+  const V3<T> e = x1 - x0, f = x2 - x1;
+  const V3<T> te = e / e.norm(), tf = f / f.norm();
+  const V3<T> ae = transport<T>(constant_vector<T>(st.t_prev), te, constant_vector<T>(st.a_prev));
+  const V3<T> af = transport<T>(constant_vector<T>(st.t_next), tf, constant_vector<T>(st.a_next));
+  const V3<T> be = te.cross(ae), bf = tf.cross(af);
+  const T ce = cos(th0), se = sin(th0), cf = cos(th1), sf = sin(th1);
+  const V3<T> m1 = ce * ae + se * be + cf * af + sf * bf;
+  const V3<T> m2 = ce * be - se * ae + cf * bf - sf * af;
+  const V3<T> kb = (T(2.0) / (T(1.0) + te.dot(tf))) * te.cross(tf);
+  const T c0 = T(std::cos(st.reference_twist)), s0 = T(std::sin(st.reference_twist));
+  const V3<T> p = transport<T>(te, tf, ae);
+  const V3<T> p_turned = c0 * p + s0 * tf.cross(p);
+  const T twist = th1 - th0 + T(st.reference_twist) + asin(p_turned.cross(af).dot(tf));
+  return V3<T>(twist, T(0.5) * kb.dot(m1), T(0.5) * kb.dot(m2));
+}
+
+template <typename T>
+T stencil_energy(const Eigen::Matrix<T, kStencil, 1>& z, const VertexStencil& st, const Vec3& stiffness,
+                 const Vec3& natural_integrated, double voronoi) {
+  const V3<T> k = stencil_strain<T>(z, st);
+  T energy(0.0);
+  for (int a = 0; a < 3; ++a) {
+    const T d = k[a] - T(natural_integrated[a]);
+    energy += T(0.5 * stiffness[a] / voronoi) * d * d;
+  }
+  return energy;
+}
+
+// Gradient and Hessian of vertex i's stencil energy at base + dz in base's chart (the inputs as
+// discrete_energy.cpp's Context assembles them).
+void derivatives(const rod::RodModel& model, const rod::RodState& base, const VecX& dz, std::size_t i,
+                 StencilVector& gradient, StencilMatrix& hessian) {
+  const rod::DofLayout layout(model);
+  const auto tangent = rod::edge_tangents(base);
+  const VertexStencil st{tangent[i - 1], base.reference_director[i - 1], tangent[i], base.reference_director[i],
+                         base.reference_twist[i]};
+  StencilVector z0;
+  for (int k = 0; k < 3; ++k) {
+    z0[k] = base.position[i - 1][k] + dz[Eigen::Index(layout.vertex(i - 1)) + k];
+    z0[4 + k] = base.position[i][k] + dz[Eigen::Index(layout.vertex(i)) + k];
+    z0[8 + k] = base.position[i + 1][k] + dz[Eigen::Index(layout.vertex(i + 1)) + k];
+  }
+  z0[3] = base.angle[i - 1] + dz[Eigen::Index(layout.angle(i - 1))];
+  z0[7] = base.angle[i] + dz[Eigen::Index(layout.angle(i))];
+  const double ell = rod::rest_edge_length(model);
+  Eigen::Matrix<Outer, kStencil, 1> z;
+  for (int k = 0; k < kStencil; ++k) {
+    z[k].value() = Inner(z0[k], kStencil, k);
+    z[k].derivatives() = Eigen::Matrix<Inner, kStencil, 1>::Constant(Inner(0.0));
+    z[k].derivatives()[k] = Inner(1.0);
+  }
+  const Outer e = stencil_energy<Outer>(z, st, model.stiffness, model.natural_strain * ell, ell);
+  gradient = e.value().derivatives();
+  for (int a = 0; a < kStencil; ++a) hessian.row(a) = e.derivatives()[a].derivatives().transpose();
+}
+
+}  // namespace previous
+
+// A smooth displacement of every dof (positions by ~3% of L, angles by ~0.1): the stencils are then
+// evaluated away from the chart's base, where the transported frames and the reference twist's
+// increment are non-trivial.
+VecX smooth_displacement(const rod::RodModel& model) {
+  const rod::DofLayout layout(model);
+  VecX dz = VecX::Zero(Eigen::Index(layout.size()));
+  for (Eigen::Index k = 0; k < dz.size(); ++k) dz[k] = 0.03 * model.length * std::sin(1.7 * double(k) + 0.4);
+  for (std::size_t j = 0; j < model.elements; ++j)
+    dz[Eigen::Index(layout.angle(j))] = 0.1 * std::cos(0.9 * double(j) + 0.2);
+  return dz;
+}
+
+// The jets' stencil gradient and Hessian equal the previous nested-AutoDiff ones up to round-off:
+// both are exact, and differ only in the order of a few hundred floating-point operations on O(1)
+// numbers (observed ~1e-15 relative), so 1e-12 relative to the largest entry leaves a wide margin
+// while any wrong term (a sign, a missing second-order cross term, a wrong reduced-variable index)
+// would show at O(1).
+void expect_stencils_match_previous(const rod::RodModel& model, const VecX& dz) {
+  const auto state = general_state(model);
+  double worst_g = 0.0, worst_h = 0.0, worst_g1 = 0.0;
+  for (std::size_t i = 1; i < model.elements; ++i) {
+    previous::StencilVector g_ref;
+    previous::StencilMatrix h_ref;
+    previous::derivatives(model, state, dz, i, g_ref, h_ref);
+    VecX g, g1;
+    Eigen::MatrixXd h, none;
+    rod::detail::stencil_derivatives_for_testing(model, state, dz, i, 2, g, h);
+    rod::detail::stencil_derivatives_for_testing(model, state, dz, i, 1, g1, none);
+    ASSERT_EQ(h.rows(), 11);
+    ASSERT_EQ(none.size(), 0);
+    worst_g = std::max(worst_g, (g - g_ref).cwiseAbs().maxCoeff() / g_ref.cwiseAbs().maxCoeff());
+    worst_h = std::max(worst_h, (h - h_ref).cwiseAbs().maxCoeff() / h_ref.cwiseAbs().maxCoeff());
+    worst_g1 = std::max(worst_g1, (g1 - g).cwiseAbs().maxCoeff() / g.cwiseAbs().maxCoeff());
+    EXPECT_EQ(h, h.transpose()) << "vertex " << i << ": the jets' Hessian is symmetric by construction";
+  }
+  EXPECT_LE(worst_g, 1e-12) << "largest relative gradient difference " << worst_g;
+  EXPECT_LE(worst_h, 1e-12) << "largest relative Hessian difference " << worst_h;
+  // First- and second-order jets run the same value and gradient arithmetic.
+  EXPECT_LE(worst_g1, 4 * kEps) << "largest relative difference of the first-order gradient " << worst_g1;
+}
+
+TEST(Rod3dEnergy, StencilHessianMatchesThePreviousNestedAutoDiffAtTheBase) {
+  const auto model = general_model(7, false);
+  expect_stencils_match_previous(model, VecX::Zero(Eigen::Index(rod::DofLayout(model).size())));
+}
+
+TEST(Rod3dEnergy, StencilHessianMatchesThePreviousNestedAutoDiffAwayFromTheBase) {
+  const auto model = general_model(7, true);
+  expect_stencils_match_previous(model, smooth_displacement(model));
+}
+
+// The stencil Hessian is the derivative of the stencil gradient (both from the jets) in the chart
+// of the base, at a displaced configuration.
+TEST(Rod3dEnergy, StencilHessianIsTheDerivativeOfTheStencilGradient) {
+  const auto model = general_model(6, false);
+  const auto state = general_state(model);
+  const rod::DofLayout layout(model);
+  const VecX dz = smooth_displacement(model);
+  const std::size_t i = 3;
+  VecX g;
+  Eigen::MatrixXd h, none;
+  rod::detail::stencil_derivatives_for_testing(model, state, dz, i, 2, g, h);
+  // The stencil dofs' places in the global dz (DofLayout).
+  std::array<std::size_t, 11> index{};
+  for (std::size_t k = 0; k < 3; ++k) {
+    index[k] = layout.vertex(i - 1) + k;
+    index[4 + k] = layout.vertex(i) + k;
+    index[8 + k] = layout.vertex(i + 1) + k;
+  }
+  index[3] = layout.angle(i - 1);
+  index[7] = layout.angle(i);
+  // Central differences as in JacobianIsTheDerivativeOfTheResidual: h^2 g''' / 6 + eps g / h with
+  // h = 1e-5 L, ~1e-10 relative; the bound 1e-7 relative to the largest Hessian entry.
+  const double step = 1e-5 * model.length;
+  double worst = 0.0;
+  for (int k = 0; k < 11; ++k) {
+    VecX plus = dz, minus = dz;
+    plus[Eigen::Index(index[std::size_t(k)])] += step;
+    minus[Eigen::Index(index[std::size_t(k)])] -= step;
+    VecX gp, gm;
+    rod::detail::stencil_derivatives_for_testing(model, state, plus, i, 1, gp, none);
+    rod::detail::stencil_derivatives_for_testing(model, state, minus, i, 1, gm, none);
+    worst = std::max(worst, ((gp - gm) / (2.0 * step) - h.col(k)).cwiseAbs().maxCoeff());
+  }
+  EXPECT_LT(worst, 1e-7 * h.cwiseAbs().maxCoeff()) << "largest Hessian error " << worst;
+}
+
+}  // namespace

@@ -137,7 +137,7 @@ void add_modes(Registry& registry) {
   metrics.push_back(diagnostic_metric("max_relative_excess", "max (omega - exact)/exact over the six (< 0: below)"));
   // The discrete torsional spectrum is known in closed form: what is left is the eigensolver's
   // round-off, a backward error of a modest multiple of eps |A|_2 on each eigenvalue (|A|_2 =
-  // omega_max^2 = the top bending eigenvalue, ~ 16 EI2/(rho S ebar^4)). Measured <= 0.092 of it
+  // omega_max^2 = the top bending eigenvalue, ~ 16 EI2/(rho S ebar^4)). Measured <= 0.108 of it
   // (N = 8 .. 256); bound 1. (The same round-off, eps omega_max^2 / omega^2 ~ N^4 eps, reaches
   // 1e-6 relative on omega_1 at N = 256: the bending errors are clean up to N = 128.)
   gates.push_back(upper_bound_gate("torsion_discrete", 1.0, GateScope::AllLevels,
@@ -152,7 +152,7 @@ void add_modes(Registry& registry) {
        "Euler-Bernoulli cantilever omega_n = (beta_n L)^2 sqrt(EI/(rho S L^4)), 1 + cos(beta L) cosh(beta L) = 0, in "
        "each plane; torsion omega_n = (2n - 1) pi / (2L) sqrt(GJ/(rho I0))",
        "Rayleigh, Theory of Sound; Meirovitch, Fundamentals of Vibrations; ALGORITHMS.md §5",
-       "discrete elastic rod linearised about its equilibrium (solvers/rod3d/linearized.hpp): the exact (AutoDiff) "
+       "discrete elastic rod linearised about its equilibrium (solvers/rod3d/linearized.hpp): the exact (forward-mode jet) "
        "static Jacobian restricted to the free dofs, projected on the null space of the inextensibility constraints "
        "in the mass metric (column-pivoted QR), dense symmetric eigensolver",
        "rod-3d/modes"},

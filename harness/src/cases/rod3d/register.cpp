@@ -7,7 +7,7 @@ namespace rod3d_cases {
 const char* const kMethod =
     "discrete elastic rod (Bergou et al. 2008, 2010): vertices and one material angle per edge, "
     "parallel-transported reference frames, inextensible edges by Lagrange multipliers; statics by "
-    "Newton with exact (AutoDiff) derivatives, banded LU, continuation; second order in h = L/N";
+    "Newton with exact derivatives (forward-mode jets), banded LU, continuation; second order in h = L/N";
 }  // namespace rod3d_cases
 
 void register_rod3d_cases(Registry& registry) {

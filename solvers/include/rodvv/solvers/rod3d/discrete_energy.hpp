@@ -5,7 +5,9 @@
 // degrees of freedom of its stencil (x_{i-1}, theta^{i-1}, x_i, theta^i, x_{i+1}), with the reference
 // directors parallel-transported from the state's tangents to the trial tangents and the reference
 // twist continued from the state's value, and it is differentiated twice by forward-mode automatic
-// differentiation (Eigen's AutoDiffScalar, nested): no finite differences, no approximation of the
+// differentiation (a second-order jet type, solvers/rod3d/taylor2.hpp, applied to the integrated
+// strains k(e, f, theta) in 8 variables and mapped to the 11 dofs; the energy's gradient and Hessian
+// follow from k's Jacobian and Hessians): no finite differences, no approximation of the
 // reference-frame terms (at the state itself the gradient is the DER gradient of ALGORITHMS.md §5,
 // holonomy term included). Stretching, the inextensibility constraints |e^j| - ebar = 0 and the loads
 // are differentiated by hand. The Jacobian is banded (one vertex stencil spans 11 consecutive degrees

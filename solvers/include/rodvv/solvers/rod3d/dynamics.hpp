@@ -36,7 +36,7 @@
 // Newton: the exact Jacobian of the step residual - chart_system in the chart of z_n at the
 // evaluation point (midpoint: its position and angle columns halved; constraint rows c_j(z_n + y)
 // differentiated by hand) plus (2) M / h^2 -, so Newton converges quadratically. Assembling it
-// (nested AutoDiff of the 11-dof stencils) costs ~30 residuals, so by default a step keeps its
+// (second-order jets of the 11-dof stencils) costs ~10 residuals, so by default a step keeps its
 // factorisation while the residual falls tenfold per full step (the inertia term (2) M / h^2, which
 // does not change, dominates it for small h) and refreshes it otherwise.
 // Banded LU (elastica2d::BandedLU), O(N) per iteration; backtracking on the scaled residual; a step

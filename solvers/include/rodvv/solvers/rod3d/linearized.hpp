@@ -51,7 +51,7 @@ struct LinearizationOptions {
   // equilibrium (StaticOptions::tolerance 1e-10) and rejects states that are not at rest.
   double equilibrium_tolerance = 1e-8;
   // Largest relative asymmetry max |A - A^T| / max |A| accepted as round-off. The Hessian comes
-  // from nested forward-mode AutoDiff (each entry a sum of O(100) products): measured <= 2e-15 for
+  // from second-order forward-mode jets (each entry a sum of O(100) products): measured <= 2e-15 for
   // N <= 128; 1e-11 leaves 4 decades of margin and still rejects any dead moment whose load
   // stiffness |M| / ebar^2 is not negligible.
   double symmetry_tolerance = 1e-11;
