@@ -83,8 +83,10 @@ rod::RodState infinite_rod_guess(const Problem& problem) {
 
 // Newton from the guess. Measured: it converges in 17 iterations at N = 100 and in 3 to 5 from
 // N = 250 up (the finer, the closer the guess), but stalls at a residual of 5e-4 for N = 150 ... 220,
-// which the default levels avoid (nested iteration from N/2 with linear prolongation was tried and
-// did not help: the prolongated sawtooth curvature needs more globalisation than the line search has).
+// which the default levels avoid. Tried and not kept: nested iteration from N/2 with linear
+// prolongation (the prolongated sawtooth curvature needs more globalisation than the line search
+// has); a root-mean-square merit in the line search (it converges at N = 200, but at N = 100 lands on
+// another equilibrium, envelope error 0.9999: branch selection at coarse N is fragile).
 rod::StaticResult solve(const Problem& problem) {
   rod::StaticOptions options;
   options.tolerance = 1e-10;
