@@ -460,6 +460,41 @@ double total_energy(const RodModel& model, const DynamicState& state) {
          gravity_energy(model, kinematics) - model.end_force.dot(kinematics.tip_position());
 }
 
+namespace {
+
+// K v = omega^2 M v for a diagonal K > 0 and M >= 0, as the standard symmetric eigenproblem of the
+// compliance-scaled mass C = K^{-1/2} M K^{-1/2}: C w = mu w, mu = 1 / omega^2, v = K^{-1/2} w / sqrt(mu)
+// (so that v^T M v = 1). The low frequencies are the LARGEST mu, which a symmetric eigensolver gets to
+// a backward error eps mu_max = eps / omega_min^2: |d omega_k^2| ~ eps omega_k^4 / omega_min^2, relative
+// eps (omega_k / omega_min)^2, free of the conditioning of M (in strain coordinates cond(M) grows as
+// N^4 and more: the Cholesky form K v = lambda M v loses eps omega_max^2 on every lambda, 1e-6
+// relative on the first bending frequency at N = 256). Ascending omega; a massless direction (mu <= 0
+// at round-off) gets omega = +inf and a zero shape.
+struct ScaledModes {
+  VecX omega;
+  MatX shapes;
+};
+ScaledModes compliance_modes(const VecX& k, const MatX& M, bool vectors) {
+  const VecX scale = k.cwiseSqrt().cwiseInverse();
+  const MatX C = scale.asDiagonal() * M * scale.asDiagonal();
+  const Eigen::SelfAdjointEigenSolver<MatX> solver(C, vectors ? Eigen::ComputeEigenvectors : Eigen::EigenvaluesOnly);
+  if (solver.info() != Eigen::Success)
+    throw SolverError("superhelix modes", "symmetric eigenproblem of the compliance-scaled mass failed", 0, 0.0);
+  const Eigen::Index n = k.size();
+  ScaledModes modes;
+  modes.omega.resize(n);
+  if (vectors) modes.shapes = MatX::Zero(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Eigen::Index j = n - 1 - i;  // largest mu first: lowest omega first
+    const double mu = solver.eigenvalues()[j];
+    modes.omega[i] = mu > 0.0 ? 1.0 / std::sqrt(mu) : std::numeric_limits<double>::infinity();
+    if (vectors && mu > 0.0) modes.shapes.col(i) = scale.asDiagonal() * solver.eigenvectors().col(j) / std::sqrt(mu);
+  }
+  return modes;
+}
+
+}  // namespace
+
 VecX bending_frequencies(const RodModel& model, std::size_t count) {
   validate(model);
   if (count < 1 || count > model.elements)
@@ -469,18 +504,53 @@ VecX bending_frequencies(const RodModel& model, std::size_t count) {
   const MatX M = mass_matrix(model, kinematics);
   const VecX k = generalised_stiffness(model);
   const auto n = static_cast<Eigen::Index>(model.elements);
-  MatX Mb(n, n), Kb = MatX::Zero(n, n);
+  MatX Mb(n, n);
+  VecX kb(n);
   for (Eigen::Index a = 0; a < n; ++a) {
-    Kb(a, a) = k[3 * a + 1];
+    kb[a] = k[3 * a + 1];
     for (Eigen::Index c = 0; c < n; ++c) Mb(a, c) = M(3 * a + 1, 3 * c + 1);
   }
-  // K v = omega^2 M v (M is positive definite on the bending coordinates of a straight rod).
-  const Eigen::GeneralizedSelfAdjointEigenSolver<MatX> solver(Kb, Mb);
-  if (solver.info() != Eigen::Success)
-    throw SolverError("superhelix modes", "generalised eigenproblem failed", 0, 0.0);
-  VecX omega(static_cast<Eigen::Index>(count));
-  for (Eigen::Index i = 0; i < omega.size(); ++i) omega[i] = std::sqrt(solver.eigenvalues()[i]);
-  return omega;
+  // K v = omega^2 M v on the kappa1 coordinates (M is positive definite there on a straight rod).
+  return compliance_modes(kb, Mb, false).omega.head(static_cast<Eigen::Index>(count));
+}
+
+StraightRodModes straight_rod_modes(const RodModel& model) {
+  validate(model);
+  if (!(model.rotational_inertia[0] > 0.0))
+    throw InputError("rotational_inertia.twist (rho I0)",
+                     "invalid parameter 'rotational_inertia.twist (rho I0)' = " + std::to_string(model.rotational_inertia[0]) +
+                         ": must be > 0 for the modes of all 3N coordinates (the twist of a straight rod moves no "
+                         "point: without rho I0, M is singular)");
+  const auto require_zero = [](const std::string& name, const Vec3& v) {
+    if (!v.isZero(0.0))
+      throw InputError(name, "invalid parameter '" + name +
+                                 "': must be 0 for the modes of the straight, unloaded rod (q = 0 is then no equilibrium)");
+  };
+  require_zero("natural_strain", model.natural_strain);
+  for (const Vec3& q0 : model.natural_strain_per_element) require_zero("natural_strain_per_element", q0);
+  require_zero("gravity", model.gravity);
+  require_zero("end_force", model.end_force);
+  require_zero("end_moment", model.end_moment);
+  const auto n = static_cast<Eigen::Index>(dof_count(model));
+  const Kinematics kinematics(model, VecX::Zero(n));
+  const MatX M = mass_matrix(model, kinematics);
+  ScaledModes scaled = compliance_modes(generalised_stiffness(model), M, true);
+  StraightRodModes modes;
+  modes.frequencies = std::move(scaled.omega);
+  modes.shapes = std::move(scaled.shapes);
+  if (!std::isfinite(modes.frequencies[n - 1]))
+    throw SolverError("superhelix modes", "a massless direction at round-off (M numerically singular)", 0, 0.0);
+  modes.omega_squared_min = modes.frequencies[0] * modes.frequencies[0];
+  modes.component_share = MatX::Zero(3, n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const auto v = modes.shapes.col(k);
+    Vec3 part = Vec3::Zero();
+    for (int c = 0; c < 3; ++c)  // v_c^T M_cc v_c over the coordinates of component c
+      for (Eigen::Index a = c; a < n; a += 3)
+        for (Eigen::Index b = c; b < n; b += 3) part[c] += v[a] * M(a, b) * v[b];
+    modes.component_share.col(k) = part / part.sum();
+  }
+  return modes;
 }
 
 }  // namespace rodvv::solvers::superhelix

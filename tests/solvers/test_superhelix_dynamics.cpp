@@ -10,6 +10,9 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <numbers>
+#include <string>
+#include <vector>
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/solvers/superhelix/dynamics.hpp"
@@ -245,6 +248,100 @@ TEST(SuperHelixDynamics, FrequenciesConvergeFromAboveAtSecondOrder) {
     const double rayleigh = sh::bending_frequencies(model, 1)[0] / (beta1 * beta1) - 1.0;
     EXPECT_LT(rayleigh, -0.005) << n;
     EXPECT_GT(rayleigh, -0.05) << n;
+  }
+}
+
+// The straight rod of superhelix/modes (GJ != EI1 != EI2, tilted clamp, rho I1 = rho I2 = 0).
+sh::RodModel straight_model(std::size_t n) {
+  sh::RodModel model;
+  model.elements = n;
+  model.length = 1.3;
+  model.stiffness = Vec3(0.55, 1.7, 3.1);
+  model.line_density = 0.8;
+  model.rotational_inertia = Vec3(0.07, 0.0, 0.0);
+  model.root_frame = Eigen::AngleAxisd(0.7, Vec3(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
+  model.root_position = Vec3(0.26, 0.52, -0.13);
+  return model;
+}
+
+TEST(SuperHelixDynamics, StraightRodModesSplitIntoTwistAndTwoBendingFamilies) {
+  // The full 3N eigenproblem of the straight rod: every mode lives in one strain component (the
+  // tilted clamp mixes them at round-off), the twist family is the linear finite element bar with
+  // consistent mass, omega_d^2 = 6 c^2 / ell^2 (1 - cos k ell) / (2 + cos k ell), k = (2n - 1) pi / (2L),
+  // the kappa1 family is bending_frequencies (the kappa1 block alone), and the kappa2 family is that of
+  // the rod with EI1 and EI2 exchanged.
+  for (std::size_t n : {3u, 8u, 24u}) {
+    const sh::RodModel model = straight_model(n);
+    const sh::StraightRodModes modes = sh::straight_rod_modes(model);
+    const auto dofs = static_cast<Eigen::Index>(3 * n);
+    ASSERT_EQ(modes.frequencies.size(), dofs);
+    ASSERT_EQ(modes.shapes.cols(), dofs);
+    const MatX M = sh::mass_matrix(model, sh::Kinematics(model, VecX::Zero(dofs)));
+    const MatX gram = modes.shapes.transpose() * M * modes.shapes;
+    EXPECT_LE((gram - MatX::Identity(dofs, dofs)).cwiseAbs().maxCoeff(), 1e-10) << n;
+    std::vector<double> family[3];
+    for (Eigen::Index k = 0; k < dofs; ++k) {
+      Eigen::Index f = 0;
+      const double share = modes.component_share.col(k).maxCoeff(&f);
+      EXPECT_GE(share, 1.0 - 1e-10) << n << " mode " << k;
+      EXPECT_NEAR(modes.component_share.col(k).sum(), 1.0, 1e-12);
+      if (k > 0) {
+        EXPECT_GE(modes.frequencies[k], modes.frequencies[k - 1]);
+      }
+      family[f].push_back(modes.frequencies[k]);
+    }
+    ASSERT_EQ(family[0].size(), n);
+    ASSERT_EQ(family[1].size(), n);
+    ASSERT_EQ(family[2].size(), n);
+    const double ell = model.length / double(n), c2 = 0.55 / 0.07;
+    for (std::size_t m = 1; m <= std::min<std::size_t>(n, 3); ++m) {
+      const double k = double(2 * m - 1) * std::numbers::pi / (2.0 * model.length);
+      const double discrete = std::sqrt(6.0 * c2 / (ell * ell) * (1.0 - std::cos(k * ell)) / (2.0 + std::cos(k * ell)));
+      EXPECT_NEAR(family[0][m - 1] / discrete, 1.0, 1e-9) << n << " " << m;
+      EXPECT_GT(family[0][m - 1], k * std::sqrt(c2)) << "from above";
+    }
+    const VecX about_n1 = sh::bending_frequencies(model, n);
+    sh::RodModel exchanged = model;
+    exchanged.stiffness = Vec3(0.55, 3.1, 1.7);
+    const VecX about_n2 = sh::bending_frequencies(exchanged, n);
+    for (std::size_t m = 0; m < std::min<std::size_t>(n, 3); ++m) {
+      EXPECT_NEAR(family[1][m] / about_n1[static_cast<Eigen::Index>(m)], 1.0, 1e-9) << n << " " << m;
+      EXPECT_NEAR(family[2][m] / about_n2[static_cast<Eigen::Index>(m)], 1.0, 1e-9) << n << " " << m;
+    }
+    // The bending planes' rotary inertia does not touch the torsion of the straight rod.
+    sh::RodModel rayleigh = model;
+    rayleigh.rotational_inertia = Vec3(0.07, 2e-3, 3e-3);
+    const sh::StraightRodModes with_rotary = sh::straight_rod_modes(rayleigh);
+    std::vector<double> twist;
+    for (Eigen::Index k = 0; k < dofs; ++k)
+      if (with_rotary.component_share(0, k) > 0.5) twist.push_back(with_rotary.frequencies[k]);
+    ASSERT_EQ(twist.size(), n);
+    EXPECT_NEAR(twist[0] / family[0][0], 1.0, 1e-9) << n;
+  }
+}
+
+TEST(SuperHelixDynamics, StraightRodModesRejectAMasslessTwistAndALoadedRod) {
+  sh::RodModel model = straight_model(4);
+  model.rotational_inertia = Vec3(0.0, 1e-3, 1e-3);
+  try {
+    sh::straight_rod_modes(model);
+    ADD_FAILURE() << "no InputError";
+  } catch (const rodvv::InputError& e) {
+    EXPECT_EQ(e.parameter(), "rotational_inertia.twist (rho I0)");
+  }
+  for (const char* what : {"natural_strain", "gravity", "end_force", "end_moment"}) {
+    sh::RodModel loaded = straight_model(4);
+    const std::string name = what;
+    (name == "natural_strain" ? loaded.natural_strain
+     : name == "gravity"      ? loaded.gravity
+     : name == "end_force"    ? loaded.end_force
+                              : loaded.end_moment) = Vec3(0.0, 0.1, 0.0);
+    try {
+      sh::straight_rod_modes(loaded);
+      ADD_FAILURE() << "no InputError for " << name;
+    } catch (const rodvv::InputError& e) {
+      EXPECT_EQ(e.parameter(), name);
+    }
   }
 }
 

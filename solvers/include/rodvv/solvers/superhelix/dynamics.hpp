@@ -119,8 +119,34 @@ double total_energy(const RodModel& model, const DynamicState& state);
 
 // The lowest `count` circular frequencies of the straight rod (q = 0) bending in the plane of n0
 // and n2 (the kappa1 coordinates), from the linearised dynamics K v = omega^2 M v (generalised
-// symmetric eigenproblem). M includes the rotary inertia rho I1 of the bending (a Rayleigh beam);
-// with rotational_inertia[1] = 0 it is the Euler-Bernoulli rod. Requires count <= N.
+// symmetric eigenproblem, solved as the standard one of K^{-1/2} M K^{-1/2} with eigenvalues
+// 1 / omega^2: the lowest frequencies to relative round-off eps (omega / omega_1)^2 at any N). M
+// includes the rotary inertia rho I1 of the bending (a Rayleigh beam); with rotational_inertia[1] = 0
+// it is the Euler-Bernoulli rod. Requires count <= N.
 VecX bending_frequencies(const RodModel& model, std::size_t count);
+
+// All small oscillations of the straight, unloaded rod (q = 0): the full linearised dynamics
+// K v = omega^2 M v on the 3N coordinates (K = generalised_stiffness, M = mass_matrix at q = 0),
+// solved like bending_frequencies as the symmetric eigenproblem of K^{-1/2} M K^{-1/2} (eigenvalues
+// 1 / omega^2). No family is assumed: on the straight rod the
+// twist, kappa1 and kappa2 coordinates decouple (the twist moves no point, kappa1 and kappa2 move the
+// points along n2 and n1, and J is diagonal in the common material frame), so every mode lives in
+// one of them up to round-off, and component_share tells which. The twist coordinates carry mass
+// only through rho I0: M is positive definite iff rho I0 > 0 (InputError "rotational_inertia.twist
+// (rho I0)" otherwise). The straight state is an equilibrium only without natural strain, gravity
+// and end loads: InputError naming natural_strain, natural_strain_per_element, gravity, end_force or
+// end_moment otherwise (the geometric stiffness of loads is not part of K).
+// Accuracy: a backward error of a small multiple of eps / omega_min^2 on every 1 / omega^2, i.e.
+// |d omega_k^2| ~ eps omega_k^4 / omega_min^2 (relative eps (omega_k / omega_min)^2: the low modes to
+// round-off whatever N; omega_min^2 is reported as omega_squared_min).
+struct StraightRodModes {
+  VecX frequencies;       // circular frequencies omega_k, ascending (3N)
+  MatX shapes;            // 3N x 3N, column k = v_k, M-normalised (v_k^T M v_k = 1)
+  MatX component_share;   // 3 x 3N: share of v_k^T M v_k carried by the twist (row 0), kappa1 (row 1)
+                          // and kappa2 (row 2) coordinates, from the diagonal blocks of M (sum 1 up to
+                          // the round-off of the off-diagonal blocks)
+  double omega_squared_min = 0.0;  // the smallest eigenvalue omega^2 (round-off unit above)
+};
+StraightRodModes straight_rod_modes(const RodModel& model);
 
 }  // namespace rodvv::solvers::superhelix
