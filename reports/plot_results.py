@@ -10,6 +10,13 @@ Writes into OUTDIR/plots:
                                "shape|computed" and "shape|closed form"); a series whose axes are
                                labelled "x" and "y" is drawn with equal aspect (a rod's shape)
   group-<group>-<name>.png     an unlabelled series overlaid across the cases of a group (finest levels)
+  group-<group>-<metric>-vs-h.png
+                               for a group of two or more cases, per error metric (kind "error")
+                               that at least two of them can draw: error vs h, one line per case,
+                               with a theoretical-order slope triangle
+  group-<group>-<metric>-work-precision.png
+                               the same errors against the time each level took (its CPU time
+                               where results.json records "cpu_seconds", else "wall_seconds")
   manifest.json                {"cases": {name: [{"file", "caption"}]}, "groups": {...}}
 File names in the manifest are relative to OUTDIR (they start with "plots/").
 
@@ -66,6 +73,7 @@ def kind_name(kind):
 
 
 def load(path):
+    """The validated document (its "cases" checked as far as the plots need)."""
     try:
         with open(path, encoding="utf-8") as stream:
             document = json.load(stream)
@@ -94,7 +102,26 @@ def load(path):
                 if len(xs) != len(ys):
                     raise InputProblem(f"field '{spath}.y': {len(ys)} values but x has {len(xs)}")
         need(case, "analyses", list, path)
-    return cases
+    return document
+
+
+def timing_note(document):
+    """Where the per-level times of a work-precision figure were measured, for its caption."""
+    provenance = document.get("provenance")
+    provenance = provenance if isinstance(provenance, dict) else {}
+    merged = document.get("merged_from")
+    if isinstance(merged, list) and merged:
+        return "on the machines of the merged runs (cases run on different machines are not comparable)"
+    machine = []
+    if isinstance(provenance.get("cpu_model"), str) and provenance["cpu_model"]:
+        machine.append(provenance["cpu_model"])
+    cores = provenance.get("host_cores")
+    if finite(cores) and cores > 0:
+        machine.append(f"{cores:g} cores")
+    build = provenance.get("build_type")
+    if isinstance(build, str) and build:
+        machine.append(f"{build} build")
+    return "on the machine that ran the report" + (f" ({', '.join(machine)})" if machine else "")
 
 
 class UniqueNames:
@@ -311,9 +338,219 @@ def group_plot(writer, group, series_name, members, stem):
                                      f"case: {names})"}
 
 
+def member_label(info, group, limit=80):
+    """The case's name within its group and its method: methods alone can coincide (two contact
+    algorithms on one discretisation)."""
+    name = info["name"]
+    if name.startswith(group + "/"):
+        name = name[len(group) + 1:]
+    method = info.get("method") or info.get("title") or ""
+    label = f"{name}: {method}" if method else name
+    return label if len(label) <= limit else label[:limit - 3] + "..."
+
+
+def error_spec(case, metric):
+    """The case's spec of `metric` if it is an error metric (kind "error"), else None."""
+    for spec in case["info"].get("metrics", []):
+        if isinstance(spec, dict) and spec.get("name") == metric and spec.get("kind") == "error":
+            return spec
+    return None
+
+
+def error_levels(case, metric):
+    """(level, error) for the levels with a finite positive error of `metric`, coarse to fine."""
+    out = []
+    for level in case["levels"]:
+        sample = level["metrics"].get(metric)
+        if isinstance(sample, dict) and finite(sample.get("error")) and sample["error"] > 0:
+            out.append((level, sample["error"]))
+    return out
+
+
+def h_points(case, metric):
+    return [(level["h"], e) for level, e in error_levels(case, metric)
+            if finite(level.get("h")) and level["h"] > 0]
+
+
+def level_seconds(level, clock):
+    seconds = level.get("cpu_seconds" if clock == "cpu" else "wall_seconds")
+    return seconds if finite(seconds) and seconds > 0 else None
+
+
+def time_points(case, metric, clock):
+    """(seconds, error, level value) per level with an error and a positive time."""
+    out = []
+    for level, e in error_levels(case, metric):
+        seconds = level_seconds(level, clock)
+        if seconds is not None:
+            out.append((seconds, e, level.get("level")))
+    return out
+
+
+def shared_error_metrics(cases, members):
+    """[(metric, [case index])] for the error metrics with a theoretical order (convergence
+    quantities: round-off metrics would only add noise and plotting time) that at least two of the
+    members can draw (finite positive errors at two or more levels), in the order the members list
+    them."""
+    order, who = [], {}
+    for index in members:
+        case = cases[index]
+        for spec in case["info"].get("metrics", []):
+            if not isinstance(spec, dict) or spec.get("kind") != "error" \
+                    or not isinstance(spec.get("name"), str) or spec.get("theoretical_order") is None:
+                continue
+            name = spec["name"]
+            if len(error_levels(case, name)) < 2:
+                continue
+            if name not in who:
+                who[name] = []
+                order.append(name)
+            if index not in who[name]:
+                who[name].append(index)
+    return [(name, who[name]) for name in order if len(who[name]) >= 2]
+
+
+def common_text(values):
+    """The one string all values share, else ""."""
+    values = set(v if isinstance(v, str) else "" for v in values)
+    return values.pop() if len(values) == 1 else ""
+
+
+def legend_below(fig, ax):
+    """The legend under the axes, the figure taller by its height: with several cases or long
+    method names no corner of the axes is reliably free of data."""
+    handles, labels = ax.get_legend_handles_labels()
+    width, height = FIGSIZE
+    extra = 0.06 + 0.16 * len(labels)
+    total = height + extra
+    fig.set_size_inches(width, total)
+    # The axes keep the size and margins writer.figure gives them in a FIGSIZE figure.
+    fig.subplots_adjust(bottom=(0.13 * height + extra) / total, top=1.0 - 0.12 * height / total)
+    fig.legend(handles, labels, loc="lower center", bbox_to_anchor=(0.5, 0.0), fontsize=7,
+               frameon=False)
+
+
+def thin_log_ticks(writer, ax):
+    """No minor ticks on a log axis spanning more than two decades, where the decades carry the
+    labels: making the ticks is most of the drawing time (these figures come by the hundred)."""
+    for axis, (low, high) in ((ax.xaxis, ax.get_xlim()), (ax.yaxis, ax.get_ylim())):
+        if low > 0 and high > 0 and abs(math.log10(high / low)) > 2.0:
+            axis.set_minor_locator(writer.ticker.NullLocator())
+
+
+def slope_triangle(ax, points, order, color):
+    """A right triangle of slope `order` under the finest point of `points` ((h, error), any
+    order), its horizontal leg one refinement step long, labelled with the order."""
+    points = sorted(points)
+    (h0, e0), h1 = points[0], points[1][0]
+    ratio = min(max(h1 / h0, 1.5), 4.0)
+    x0, x1 = h0, h0 * ratio
+    y0 = e0 / 3.0
+    y1 = y0 * ratio ** order
+    ax.plot([x0, x1, x1, x0], [y0, y0, y1, y0], "-", color=color, linewidth=0.9)
+    ax.annotate(f"{order:g}", (x1, math.sqrt(y0 * y1)), xytext=(3, 0), textcoords="offset points",
+                fontsize=7, color=color, va="center")
+    ax.annotate("1", (math.sqrt(x0 * x1), y0), xytext=(0, -3), textcoords="offset points",
+                fontsize=7, color=color, ha="center", va="top")
+
+
+def group_error_plot(writer, group, metric, members, stem):
+    """Error of `metric` vs h for the member cases, one line each."""
+    curves = [(case["info"], error_spec(case, metric), h_points(case, metric)) for case in members]
+    curves = [c for c in curves if c[1] is not None and len(c[2]) >= 2]
+    if len(curves) < 2:
+        return None
+    resolution = common_text(info.get("resolution", {}).get("name") for info, _, _ in curves)
+    unit = common_text(spec.get("unit") for _, spec, _ in curves)
+    fig, ax = writer.figure(f"{group}: {metric}, error vs h",
+                            "h" + (f"  ({resolution})" if resolution else ""),
+                            f"{metric} error" + (f" ({unit})" if unit else ""))
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    writer.log_axis(ax.xaxis)
+    writer.log_axis(ax.yaxis)
+    triangles = {}  # theoretical order -> (points, color) of the case with the lowest finest error
+    for index, (info, spec, points) in enumerate(curves):
+        color = f"C{index % 10}"
+        theory = spec.get("theoretical_order")
+        label = member_label(info, group, 66)
+        if finite(theory) and theory > 0:
+            label += f" (theory {theory:g})"
+            # Under the lowest line of that order, the triangle stays clear of the others.
+            if theory not in triangles or min(points)[1] < min(triangles[theory][0])[1]:
+                triangles[theory] = (points, color)
+        ax.plot([p[0] for p in points], [p[1] for p in points], "o-", color=color, markersize=4,
+                linewidth=1.2, label=label)
+    # More than a few orders would clutter the figure; the legend carries each case's order.
+    if len(triangles) > 3:
+        triangles = {}
+    for theory, (points, color) in triangles.items():
+        slope_triangle(ax, points, theory, color)
+    thin_log_ticks(writer, ax)
+    legend_below(fig, ax)
+    file = writer.save(fig, stem)
+    names = ", ".join(info["name"] for info, _, _ in curves)
+    caption = (f"{metric}: error vs h across group {group}, one line per case, a marker per level "
+               f"(cases: {names})")
+    if triangles:
+        caption += "; triangles: theoretical slope " + ", ".join(f"{t:g}" for t in triangles)
+    return {"file": file, "caption": caption}
+
+
+def work_clock(members, metric):
+    """"cpu" if every level with an error of `metric` records a CPU time, else "wall": one
+    clock per figure."""
+    levels = [level for case in members for level, _ in error_levels(case, metric)]
+    return "cpu" if levels and all(level_seconds(l, "cpu") is not None for l in levels) else "wall"
+
+
+def group_work_plot(writer, group, metric, members, stem, note):
+    """Work-precision: error of `metric` vs the time per level for the member cases, one line
+    each, levels coarse to fine."""
+    clock = work_clock(members, metric)
+    curves = [(case["info"], error_spec(case, metric), time_points(case, metric, clock))
+              for case in members]
+    curves = [c for c in curves if c[1] is not None and len(c[2]) >= 2]
+    if len(curves) < 2:
+        return None
+    clock_name = "CPU" if clock == "cpu" else "wall-clock"
+    unit = common_text(spec.get("unit") for _, spec, _ in curves)
+    fig, ax = writer.figure(f"{group}: {metric}, work-precision",
+                            f"{clock_name} time per level (s, single run)",
+                            f"{metric} error" + (f" ({unit})" if unit else ""))
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    writer.log_axis(ax.xaxis)
+    writer.log_axis(ax.yaxis)
+    label_levels = len(curves) <= 3
+    for index, (info, spec, points) in enumerate(curves):
+        color = f"C{index % 10}"
+        ax.plot([p[0] for p in points], [p[1] for p in points], "o-", color=color, markersize=4,
+                linewidth=1.2, label=member_label(info, group))
+        if label_levels:
+            resolution = info.get("resolution", {}).get("name", "")
+            for k, (seconds, error, value) in enumerate(points):
+                if finite(value):
+                    text = f"{resolution}={value:g}" if k == 0 and resolution else f"{value:g}"
+                    ax.annotate(text, (seconds, error), xytext=(4, 2), textcoords="offset points",
+                                fontsize=6, color=color)
+    thin_log_ticks(writer, ax)
+    legend_below(fig, ax)
+    file = writer.save(fig, stem)
+    names = ", ".join(info["name"] for info, _, _ in curves)
+    caption = (f"{metric}: work-precision across group {group}, error vs {clock_name} time per "
+               f"level, one line per case, a marker per level"
+               + (" (labelled with its resolution)" if label_levels else "")
+               + f"; the line further left at a given error reaches it cheaper (cases: {names}). "
+               f"Times are single-run {clock_name} measurements of the whole level (solve and "
+               f"error evaluation) {note}, so short times are noisy")
+    return {"file": file, "caption": caption}
+
+
 def plan(cases):
-    """The plot jobs in manifest order: one per case, then one per group overlay. File stems are
-    made unique here, so parallel workers never write the same file."""
+    """The plot jobs in manifest order: one per case, then one per group overlay, then per group
+    of two or more cases and shared error metric its error-vs-h and work-precision figures. File
+    stems are made unique here, so parallel workers never write the same file."""
     unique = UniqueNames()
     case_jobs, overlays = [], {}  # overlays: group -> series name -> [case index]
     for index, case in enumerate(cases):
@@ -342,10 +579,28 @@ def plan(cases):
             if len(members) > 1:
                 stem = unique(f"group-{slugify(group)}-{slugify(series_name)}")
                 group_jobs.append(("group", group, series_name, members, stem))
+    by_group = {}  # group -> [case index], in case order
+    for index, case in enumerate(cases):
+        group = case["info"].get("group")
+        if isinstance(group, str) and group:
+            by_group.setdefault(group, []).append(index)
+    for group, members in by_group.items():
+        if len(members) < 2:
+            continue
+        for metric, indices in shared_error_metrics(cases, members):
+            stem = f"group-{slugify(group)}-{slugify(metric)}"
+            drawn = [i for i in indices if len(h_points(cases[i], metric)) >= 2]
+            if len(drawn) >= 2:
+                group_jobs.append(("group-error", group, metric, drawn, unique(stem + "-vs-h")))
+            clock = work_clock([cases[i] for i in indices], metric)
+            timed = [i for i in indices if len(time_points(cases[i], metric, clock)) >= 2]
+            if len(timed) >= 2:
+                group_jobs.append(("group-work", group, metric, timed,
+                                   unique(stem + "-work-precision")))
     return case_jobs + group_jobs
 
 
-_STATE = {}  # cases and writer, set before the worker processes are forked
+_STATE = {}  # cases, writer and timing note, set before the worker processes are forked
 
 
 def run_job(job):
@@ -359,6 +614,14 @@ def run_job(job):
             entries.append(series_plot(writer, case, level, [level["series"][k] for k in indices],
                                        stem))
         return [e for e in entries if e]
+    if job[0] in ("group-error", "group-work"):
+        _, group, metric, members, stem = job
+        members = [cases[index] for index in members]
+        if job[0] == "group-error":
+            entry = group_error_plot(writer, group, metric, members, stem)
+        else:
+            entry = group_work_plot(writer, group, metric, members, stem, _STATE["timing_note"])
+        return [entry] if entry else []
     _, group, series_name, members, stem = job
     pairs = []
     for index in members:
@@ -393,7 +656,8 @@ def main(argv):
         return 2
     results_path, outdir = argv[1], argv[2]
     try:
-        cases = load(results_path)
+        document = load(results_path)
+        cases = document["cases"]
     except InputProblem as problem:
         print(f"plot_results.py: {results_path}: {problem}", file=sys.stderr)
         return 2
@@ -407,6 +671,7 @@ def main(argv):
         return 3
     os.makedirs(outdir, exist_ok=True)
     _STATE["cases"] = cases
+    _STATE["timing_note"] = timing_note(document)
     _STATE["writer"] = PlotWriter(plt, ticker, outdir)
 
     manifest = {"cases": {}, "groups": {}}

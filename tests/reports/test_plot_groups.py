@@ -1,0 +1,122 @@
+#!/usr/bin/python3
+"""The group comparison figures of reports/plot_results.py on a small synthetic results.json.
+
+    /usr/bin/python3 test_plot_groups.py PATH/TO/plot_results.py
+
+A group of two or more cases gets, per error metric that at least two of them can draw, an
+error-vs-h and a work-precision figure; a group of one case, a metric only one case has and a
+shared invariant get none. Prints "skipped" and exits 0 when matplotlib is missing (as the C++
+plot tests skip).
+"""
+
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+SCRIPT = None
+
+
+def level(h, errors, wall, cpu=None):
+    out = {"level": 1.0 / h, "h": h, "wall_seconds": wall, "failure": None, "series": [],
+           "metrics": {name: {"value": e, "reference": 0.0, "error": e} for name, e in errors.items()}}
+    if cpu is not None:
+        out["cpu_seconds"] = cpu
+    return out
+
+
+def case(name, group, order, scale, cpu=False, extra_metric=None):
+    metrics = [{"name": "tip", "kind": "error", "unit": "length", "description": "tip error",
+                "extrapolate": True, "theoretical_order": order},
+               {"name": "drift", "kind": "invariant", "unit": "", "description": "drift",
+                "extrapolate": False, "theoretical_order": None}]
+    if extra_metric:
+        metrics.append({"name": extra_metric, "kind": "error", "unit": "", "description": "",
+                        "extrapolate": False, "theoretical_order": None})
+    levels = []
+    for k, h in enumerate((0.1, 0.05, 0.025)):
+        errors = {"tip": scale * h ** order, "drift": 1e-3 * h}
+        if extra_metric:
+            errors[extra_metric] = 1e-4 * h
+        wall = 1e-3 * 2 ** k
+        levels.append(level(h, errors, wall, cpu=0.9 * wall if cpu else None))
+    return {"info": {"name": name, "family": "demo", "group": group, "title": name,
+                     "method": f"method of {name}", "metrics": metrics,
+                     "resolution": {"name": "N", "description": "elements", "scale": "count",
+                                    "default_levels": [10, 20, 40], "extended_levels": []}},
+            "levels": levels, "analyses": [], "gates": [], "skipped_gates": [],
+            "wall_seconds": 0.01}
+
+
+def results():
+    return {"schema_version": 1, "merged_from": [], "passed": True,
+            "provenance": {"cpu_model": "Test CPU", "host_cores": 2, "build_type": "Release"},
+            "cases": [case("demo/two/nodal", "demo/two", 2.0, 1.0, extra_metric="only-here"),
+                      case("demo/two/reduced", "demo/two", 4.0, 3.0),
+                      case("demo/one/alone", "demo/one", 2.0, 1.0),
+                      case("demo/cpu/a", "demo/cpu", 2.0, 1.0, cpu=True),
+                      case("demo/cpu/b", "demo/cpu", 2.0, 2.0, cpu=True)]}
+
+
+class GroupFigures(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        path = os.path.join(cls.tmp.name, "results.json")
+        with open(path, "w", encoding="utf-8") as stream:
+            json.dump(results(), stream)
+        cls.plots = os.path.join(cls.tmp.name, "plots")
+        run = subprocess.run([sys.executable, SCRIPT, path, cls.plots], capture_output=True,
+                             text=True, check=False)
+        if run.returncode != 0:
+            raise AssertionError(f"plot_results.py exited {run.returncode}: {run.stderr}")
+        with open(os.path.join(cls.plots, "manifest.json"), encoding="utf-8") as stream:
+            cls.manifest = json.load(stream)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def files(self, group):
+        return [entry["file"] for entry in self.manifest["groups"].get(group, [])]
+
+    def test_two_case_group_gets_error_and_work_precision_figures(self):
+        self.assertEqual(self.files("demo/two"), ["plots/group-demo-two-tip-vs-h.png",
+                                                  "plots/group-demo-two-tip-work-precision.png"])
+        for file in self.files("demo/two"):
+            self.assertGreater(os.path.getsize(os.path.join(self.tmp.name, file)), 1000, file)
+
+    def test_one_case_group_gets_none(self):
+        self.assertNotIn("demo/one", self.manifest["groups"])
+        self.assertFalse(any(name.startswith("group-demo-one") for name in os.listdir(self.plots)))
+
+    def test_captions_name_the_cases_and_the_clock(self):
+        entries = self.manifest["groups"]["demo/two"]
+        self.assertIn("demo/two/nodal, demo/two/reduced", entries[0]["caption"])
+        self.assertIn("theoretical slope 2, 4", entries[0]["caption"])
+        work = entries[1]["caption"]
+        self.assertIn("wall-clock time per level", work)
+        self.assertIn("single-run", work)
+        self.assertIn("Test CPU", work)
+        cpu = self.manifest["groups"]["demo/cpu"][1]
+        self.assertEqual(cpu["file"], "plots/group-demo-cpu-tip-work-precision.png")
+        self.assertIn("CPU time per level", cpu["caption"])
+
+    def test_cases_keep_their_own_figures(self):
+        self.assertEqual(self.manifest["cases"]["demo/one/alone"][0]["file"],
+                         "plots/demo-one-alone-convergence.png")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        print("usage: test_plot_groups.py PATH/TO/plot_results.py", file=sys.stderr)
+        sys.exit(2)
+    SCRIPT = os.path.abspath(sys.argv.pop(1))
+    try:
+        import matplotlib  # noqa: F401  (the script under test needs it)
+    except ImportError:
+        print(f"skipped: matplotlib is not available for {sys.executable}")
+        sys.exit(0)
+    unittest.main(verbosity=2)
