@@ -26,6 +26,10 @@ namespace {
 }
 }  // namespace
 
+void require_finite_vector(std::string_view name, const Vec3& value) {
+  for (int i = 0; i < 3; ++i) require_finite(std::string(name) + "[" + std::to_string(i) + "]", value[i]);
+}
+
 void require_finite(std::string_view name, double value) {
   if (!std::isfinite(value)) fail(name, value, "a finite number");
 }

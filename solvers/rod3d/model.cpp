@@ -12,10 +12,6 @@ namespace rodvv::solvers::rod3d {
 
 namespace {
 
-void require_finite_vector(const std::string& name, const Vec3& v) {
-  for (int i = 0; i < 3; ++i) require_finite(name + "[" + std::to_string(i) + "]", v[i]);
-}
-
 // A rotation to 1e-10 (a frame computed in double precision, not a guess).
 void require_rotation(const std::string& name, const Mat3& frame) {
   for (int i = 0; i < 3; ++i)

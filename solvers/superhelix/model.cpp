@@ -10,12 +10,6 @@
 
 namespace rodvv::solvers::superhelix {
 
-namespace {
-void require_finite_vector(const std::string& name, const Vec3& v) {
-  for (int i = 0; i < 3; ++i) require_finite(name + "[" + std::to_string(i) + "]", v[i]);
-}
-}  // namespace
-
 void validate(const RodModel& model) {
   require_at_least("elements", model.elements, 1);
   require_positive("length", model.length);

@@ -39,6 +39,17 @@ TEST(Validation, RejectsOutOfRangeAndNaNNamingTheParameter) {
   EXPECT_THROW(rodvv::require_finite("x", kNaN), rodvv::InputError);
 }
 
+TEST(Validation, FiniteVectorNamesTheComponent) {
+  EXPECT_NO_THROW(rodvv::require_finite_vector("gravity", rodvv::Vec3(0.0, -9.81, 1e300)));
+  try {
+    rodvv::require_finite_vector("gravity", rodvv::Vec3(0.0, kNaN, 1.0));
+    FAIL() << "a NaN component passed";
+  } catch (const rodvv::InputError& e) {
+    EXPECT_EQ(e.parameter(), "gravity[1]");
+  }
+  EXPECT_THROW(rodvv::require_finite_vector("end_force", rodvv::Vec3(0.0, 0.0, -kInf)), rodvv::InputError);
+}
+
 TEST(Validation, FormatsValuesSoTheyRoundTrip) {
   EXPECT_EQ(rodvv::format_value(0.1), "0.1");
   EXPECT_EQ(rodvv::format_value(kNaN), "NaN");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Geometry>
 #include <fmt/format.h>
 
 #include "rodvv/harness/trajectory_metrics.hpp"
@@ -23,6 +24,10 @@ MetricSpec invariant_metric(std::string name, std::string description, std::opti
 }
 MetricSpec diagnostic_metric(std::string name, std::string description) {
   return {std::move(name), MetricKind::Diagnostic, "", std::move(description), false, std::nullopt};
+}
+
+Mat3 tilted_frame(double angle) {
+  return Eigen::AngleAxisd(angle, Vec3(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
 }
 
 Resolution element_levels(std::string description, std::vector<double> levels, std::vector<double> extended) {

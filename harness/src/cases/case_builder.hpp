@@ -22,6 +22,9 @@ MetricSpec error_metric(std::string name, std::string unit, std::string descript
 MetricSpec invariant_metric(std::string name, std::string description, std::optional<double> order = std::nullopt);
 MetricSpec diagnostic_metric(std::string name, std::string description);
 
+// A general rotation (about the axis (0.3, -0.5, 0.8)), so that no 3-D case lives in coordinate planes.
+Mat3 tilted_frame(double angle);
+
 // A sweep over the element count N (h = 1 / N).
 Resolution element_levels(std::string description, std::vector<double> levels, std::vector<double> extended);
 std::size_t element_count(double level);

@@ -44,6 +44,7 @@
 #include <fmt/format.h>
 
 #include "rodvv/common/errors.hpp"
+#include "case_builder.hpp"
 #include "rodvv/harness/registry.hpp"
 #include "rodvv/harness/trajectory_metrics.hpp"
 #include "rodvv/invariants/noether3d.hpp"
@@ -73,50 +74,19 @@ constexpr const char* kMethod =
     "line search, load stepping); Gauss-Legendre mass quadrature (4 points per element) of the translational "
     "and rotational inertia of the cross-sections";
 
-std::size_t element_count(double level) { return static_cast<std::size_t>(std::llround(level)); }
-
-MetricSample error_sample(double computed, double reference) {
-  return {computed, reference, std::abs(computed - reference)};
-}
-MetricSample value_sample(double value) { return {value, 0.0, std::abs(value)}; }
-MetricSample diagnostic(double value) { return {value, std::nullopt, std::nullopt}; }
-
-MetricSpec error_metric(std::string name, std::string unit, std::string description,
-                        std::optional<double> order, bool extrapolate = false) {
-  return {std::move(name), MetricKind::Error, std::move(unit), std::move(description), extrapolate, order};
-}
-MetricSpec invariant_metric(std::string name, std::string description, std::optional<double> order = std::nullopt) {
-  return {std::move(name), MetricKind::Invariant, "", std::move(description), false, order};
-}
-MetricSpec diagnostic_metric(std::string name, std::string description) {
-  return {std::move(name), MetricKind::Diagnostic, "", std::move(description), false, std::nullopt};
-}
-
-// A general rotation for the clamp, so that no case lives in coordinate planes only.
-Mat3 tilted_frame(double tilt) {
-  return (Eigen::AngleAxisd(tilt, Vec3(0.3, -0.5, 0.8).normalized())).toRotationMatrix();
-}
-
-// H metrics of a 3-D solution: spread along the stations (relative to the term scale), the largest
-// difference between the compact and flattened forms, and (optionally) the mean vs a closed form.
-void add_noether_metrics(LevelOutput& output, const SpatialRodSolution& solution, std::optional<double> exact) {
-  const auto summary = invariants::noether3d_summary(solution);
-  const double scale = std::max(summary.scale, 1e-300);
-  output.metrics["H_spread"] = value_sample(summary.spread / scale);
-  output.metrics["H_form_difference"] = value_sample(summary.form_difference / scale);
-  if (exact)
-    output.metrics["H_mean"] = {summary.mean, *exact, std::abs(summary.mean - *exact) / std::max(std::abs(*exact), scale)};
-  output.series.push_back(thin_series("H(s)|compact", "s", "H", solution.s, invariants::noether3d_compact(solution)));
-  output.series.push_back(thin_series("H(s)|flattened", "s", "H", solution.s, invariants::noether3d_flattened(solution)));
-}
-
-std::vector<MetricSpec> noether_metric_specs(bool exact, std::optional<double> spread_order) {
-  std::vector<MetricSpec> specs{
-      invariant_metric("H_spread", "max |H(s) - mean H| / term scale at the element midpoints", spread_order),
-      invariant_metric("H_form_difference", "max |H_compact - H_flattened| / term scale (round-off)")};
-  if (exact) specs.push_back(error_metric("H_mean", "force", "|mean H - closed form| / max(|H|, term scale)", std::nullopt));
-  return specs;
-}
+// The shared case builder (case_builder.hpp): samples, metric specs, measured bounds, the tilted
+// clamp frame and the 3-D Noether metrics.
+using cases::add_noether3d_metrics;
+using cases::diagnostic;
+using cases::diagnostic_metric;
+using cases::element_count;
+using cases::error_metric;
+using cases::error_sample;
+using cases::invariant_metric;
+using cases::measured_bound;
+using cases::noether3d_metric_specs;
+using cases::tilted_frame;
+using cases::value_sample;
 
 Parameter length_parameter(double value = 1.0) {
   return make_parameter("L", value, 0.0, 1e6, true, false, "length", "rod length");
@@ -128,21 +98,11 @@ Parameter stiffness_parameter() {
 Case make_case(std::string name, std::string title, std::string physics, std::string reference,
                std::string citation, Parameters parameters, Resolution resolution,
                std::vector<MetricSpec> metrics, std::vector<GateSpec> gates, LevelRunner runner) {
-  Case c;
-  c.info.name = std::move(name);
-  c.info.family = "superhelix";
-  c.info.group = c.info.name;
-  c.info.title = std::move(title);
-  c.info.physics = std::move(physics);
-  c.info.reference = std::move(reference);
-  c.info.citation = std::move(citation);
-  c.info.method = kMethod;
-  c.info.parameters = std::move(parameters);
-  c.info.resolution = std::move(resolution);
-  c.info.metrics = std::move(metrics);
-  c.gates = std::move(gates);
-  c.run_level = std::move(runner);
-  return c;
+  return cases::make_case("superhelix",
+                          {std::move(name), std::move(title), std::move(physics), std::move(reference),
+                           std::move(citation), kMethod},
+                          std::move(parameters), std::move(resolution), std::move(metrics), std::move(gates),
+                          std::move(runner));
 }
 
 // Cases of the same problem as a nodal rod3d case share its comparison group (the report overlays
@@ -154,14 +114,6 @@ Case in_group(Case c, std::string group) {
 
 Resolution elements(std::vector<double> levels, std::vector<double> extended) {
   return {"N", "number of helical elements", ResolutionScale::Count, std::move(levels), std::move(extended)};
-}
-
-GateSpec measured_bound(const std::string& metric, double at_finest, double h_finest, double order) {
-  GateSpec gate = scaled_upper_bound_gate(metric, 2.0 * at_finest / std::pow(h_finest, order), order,
-                                          GateScope::FinestLevel,
-                                          fmt::format("C = 2 x the value measured at the finest default level / h^{:g}", order));
-  gate.measured = true;
-  return gate;
 }
 
 // ---- roll-up -------------------------------------------------------------------------------------
@@ -200,7 +152,7 @@ LevelOutput run_roll_up(const Parameters& p, double level) {
   output.metrics["tip_gap"] = error_sample((solution.vertex_position.back() - model.root_position).norm() / L,
                                            (ref::end_moment_roll_up_point(rod, L).position - model.root_position).norm() / L);
   output.metrics["newton_iterations"] = diagnostic(double(result.iterations));
-  add_noether_metrics(output, solution, ref::end_moment_roll_up_invariant(rod));
+  add_noether3d_metrics(output, solution, ref::end_moment_roll_up_invariant(rod));
   return output;
 }
 
@@ -240,7 +192,7 @@ LevelOutput run_helix(const Parameters& p, double level) {
   output.metrics["frame_max_error"] = value_sample(frame);
   output.metrics["strain_max_error"] = value_sample(strain / exact.darboux);
   output.metrics["newton_iterations"] = diagnostic(double(result.iterations));
-  add_noether_metrics(output, solution, exact.H);
+  add_noether3d_metrics(output, solution, exact.H);
   std::vector<double> x, y, xr, yr;
   for (std::size_t i = 0; i < solution.vertex_s.size(); ++i) {
     x.push_back(solution.vertex_position[i].x());
@@ -342,7 +294,7 @@ LevelOutput run_heavy(const Parameters& p, double level) {
   const auto result = sh::solve_static(model, options);
   const SpatialRodSolution solution = sh::make_solution(model, result.q);
   LevelOutput output;
-  add_noether_metrics(output, solution, std::nullopt);
+  add_noether3d_metrics(output, solution, std::nullopt);
   output.metrics["newton_iterations"] = diagnostic(double(result.iterations));
   output.metrics["tip_z"] = diagnostic(solution.vertex_position.back().z());
   return output;
@@ -381,7 +333,7 @@ LevelOutput run_clothoid_heavy(const Parameters& p, double level) {
   const SpatialRodSolution nodes = sh::make_clothoid_solution(model, result.q, sh::ClothoidStations::Nodes);
   const SpatialRodSolution gauss = sh::make_clothoid_solution(model, result.q, sh::ClothoidStations::Gauss);
   LevelOutput output;
-  add_noether_metrics(output, nodes, std::nullopt);
+  add_noether3d_metrics(output, nodes, std::nullopt);
   const auto at_gauss = invariants::noether3d_summary(gauss);
   output.metrics["H_spread_gauss"] = value_sample(at_gauss.spread / std::max(at_gauss.scale, 1e-300));
   auto& forms = output.metrics["H_form_difference"];
@@ -671,8 +623,8 @@ void register_superhelix_cases(Registry& registry) {
         {{"shape_max_error", MetricKind::Error, "", "max |r_i - r_exact(s_i)| / L over vertices", false, std::nullopt},
          {"tip_gap", MetricKind::Error, "", "|r(L) - r(0)| / L vs the closed form (0: a full turn closes)", false,
           std::nullopt},
-         noether_metric_specs(true, std::nullopt)[0], noether_metric_specs(true, std::nullopt)[1],
-         noether_metric_specs(true, std::nullopt)[2], diagnostic_metric("newton_iterations", "Newton iterations")},
+         noether3d_metric_specs(true, std::nullopt)[0], noether3d_metric_specs(true, std::nullopt)[1],
+         noether3d_metric_specs(true, std::nullopt)[2], diagnostic_metric("newton_iterations", "Newton iterations")},
         gates, run_roll_up), "rod-3d/roll-up"));
   }
   {
@@ -688,7 +640,7 @@ void register_superhelix_cases(Registry& registry) {
         {"frame_max_error", MetricKind::Error, "", "max |R_i - R_helix(s_i)| (entries)", false, std::nullopt},
         {"strain_max_error", MetricKind::Error, "", "max |q_Q - (tau, kappa, 0)| / |u|", false, std::nullopt},
         diagnostic_metric("newton_iterations", "Newton iterations")};
-    for (auto& m : noether_metric_specs(true, std::nullopt)) metrics.push_back(m);
+    for (auto& m : noether3d_metric_specs(true, std::nullopt)) metrics.push_back(m);
     registry.add(in_group(make_case(
         "superhelix/helix-axial-wrench", "uniform helix held by an axial wrench, with natural twist",
         "Kirchhoff rod (isotropic bending B, twist C, natural twist u_hat0 = tau - M_t/C) clamped in the "
@@ -780,7 +732,7 @@ void register_superhelix_cases(Registry& registry) {
          make_parameter("weight", 3.0, 0.0, 50.0, true, false, "", "rho S g L^3 / EI")},
         elements(levels, {8, 16, 32, 64, 128}),
         [] {
-          auto specs = noether_metric_specs(false, 2.0);
+          auto specs = noether3d_metric_specs(false, 2.0);
           specs.push_back(diagnostic_metric("newton_iterations", "Newton iterations"));
           specs.push_back(diagnostic_metric("tip_z", "tip height"));
           return specs;

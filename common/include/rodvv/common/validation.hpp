@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <string_view>
 
+#include "rodvv/common/eigen_types.hpp"
+
 namespace rodvv {
 
 void require_finite(std::string_view name, double value);
@@ -15,6 +17,8 @@ void require_open_interval(std::string_view name, double value, double lo, doubl
 void require_closed_interval(std::string_view name, double value, double lo, double hi);  // lo <= v <= hi
 void require_greater(std::string_view name, double value, double bound);                  // v > bound
 void require_at_least(std::string_view name, std::size_t value, std::size_t minimum);
+// Each component finite; the error names it as name[i].
+void require_finite_vector(std::string_view name, const Vec3& value);
 
 // Formats a double with the shortest round-tripping precision used in all error messages.
 std::string format_value(double value);

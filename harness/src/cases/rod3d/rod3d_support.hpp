@@ -1,6 +1,6 @@
 #pragma once
-// What the rod3d case files share beyond the case builder: a general tilted frame (so that no case
-// lives in coordinate planes) and a rod state laid on a given curve with given material frames.
+// What the rod3d case files share beyond the case builder: a rod state laid on a given curve with
+// given material frames.
 #include <functional>
 #include <vector>
 
@@ -10,10 +10,6 @@
 #include "rodvv/solvers/rod3d/state.hpp"
 
 namespace rodvv::harness::rod3d_cases {
-
-inline Mat3 tilted_frame(double angle) {
-  return Eigen::AngleAxisd(angle, Vec3(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
-}
 
 struct CurvePoint {
   Vec3 position;
