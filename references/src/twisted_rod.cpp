@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <numbers>
 #include <string>
+
+#include <Eigen/Dense>
 
 #include "bracketed_root.hpp"
 #include "rodvv/common/errors.hpp"
@@ -100,6 +103,67 @@ double greenhill_critical_load(const GreenhillColumn& column, double M) {
   require_finite("M", M);
   const double k = kPi / column.L, half = M / (2.0 * column.B);
   return column.B * (k * k - half * half);
+}
+
+namespace {
+using Complex = std::complex<double>;
+
+// (e^z - 1)/z and (e^z - 1 - z)/z^2, by their Taylor series where the closed form cancels (|z| < 1/2:
+// 25 terms leave < 2^-25/25! ~ 1e-33).
+Complex exp_ratio_1(Complex z) {
+  if (std::abs(z) >= 0.5) return (std::exp(z) - 1.0) / z;
+  Complex sum = 0.0, term = 1.0;
+  for (int n = 1; n <= 25; ++n) sum += (term /= double(n)), term *= z;
+  return sum;
+}
+Complex exp_ratio_2(Complex z) {
+  if (std::abs(z) >= 0.5) return (std::exp(z) - 1.0 - z) / (z * z);
+  Complex sum = 0.0, term = 0.5;
+  for (int n = 2; n <= 26; ++n) sum += term, term *= z / double(n + 1);
+  return sum;
+}
+
+// Im(det(A(M)) e^{-i M L/(2B)}) of the semi-tangential column (header, 3b): zero at a critical moment.
+double semitangential_determinant(const GreenhillColumn& c, double M) {
+  const double B = c.B, L = c.L, root = std::sqrt(M * M + 4.0 * B * c.P);
+  const double k1 = (M + root) / (2.0 * B), k2 = -2.0 * c.P / (M + root);  // k1 k2 = -P/B without cancellation
+  const Complex i(0.0, 1.0), e1 = std::exp(i * k1 * L), z2 = i * k2 * L;
+  const double half = 0.5 * M;  // the semi-tangential end moment's share: i B w'' + (M/2) w' = 0
+  const Complex end1 = -i * B * k1 * k1 + half * i * k1;  // (i B d^2/ds^2 + (M/2) d/ds) e^{i k1 s} at s = 0
+  Eigen::Matrix4cd a;
+  a << 1.0, 0.0, 1.0, 0.0,                                        // w(0) = 0
+      1.0, L, e1, L * L * exp_ratio_2(z2),                        // w(L) = 0
+      0.0, half, end1, i * B,                                     // moment at s = 0
+      0.0, half, end1 * e1, i * B * std::exp(z2) + half * L * exp_ratio_1(z2);  // moment at s = L
+  return (a.determinant() * std::exp(-i * M * L / (2.0 * B))).imag();
+}
+}  // namespace
+
+double greenhill_semitangential_critical_moment(const GreenhillColumn& column) {
+  require_positive("B", column.B);
+  require_positive("L", column.L);
+  require_finite("P", column.P);
+  const double euler = kPi * kPi * column.B / (column.L * column.L);
+  if (!(column.P < euler))
+    throw InputError("P", "invalid parameter 'P' = " + format_value(column.P) +
+                              ": must be below the Euler load pi^2 B / L^2 = " + format_value(euler));
+  // Scan upward from where the roots k1,2 are real (for tension, M^2 > -4 B P: below, the straight
+  // rod is stable, as the helical threshold M^2 = 4 B T says) in steps of pi B/(16 L), 1/32 of the
+  // spacing of the axial problem's successive roots, then TOMS 748 on the first sign change.
+  const double step = kPi * column.B / (16.0 * column.L);
+  double low = (column.P < 0.0 ? 2.0 * std::sqrt(-column.B * column.P) : 0.0) + 1e-3 * step;
+  const auto f = [&](double M) { return semitangential_determinant(column, M); };
+  double f_low = f(low);
+  for (int n = 0; n < 4096; ++n) {
+    const double high = low + step, f_high = f(high);
+    if ((f_low < 0.0) != (f_high < 0.0))
+      return detail::solve_bracketed("Greenhill semi-tangential moment", f, low, high, f_low, f_high);
+    low = high;
+    f_low = f_high;
+  }
+  throw SolverError("Greenhill semi-tangential moment",
+                    "Greenhill semi-tangential moment: no sign change of the determinant in 4096 steps of pi B/(16 L)",
+                    4096, f_low);
 }
 
 MichellRingSolution michell_ring(const MichellRing& ring) {

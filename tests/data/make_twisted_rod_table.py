@@ -20,6 +20,10 @@ the table measures the C++ algorithm, not the rounding of its inputs. 40 digits;
     B w'' - i M w' + P w = 0, w(0) = 0, w'(0) = 1 (mpmath.odefun), findroot on w(L; M) = 0 for the
     smallest M > 0 (a simple zero in complex M, started from 0.98 x the closed form; the imaginary
     part of the root is asserted ~0).
+  * Greenhill with semi-tangential end torques: shooting on the third-order moment balance
+    B w''' - i M w'' + P w' = -N (two shots for the unknown slope and lateral force), findroot on
+    the 2 x 2 determinant of the end conditions in complex M (the C++ code uses the closed-form
+    exponential solution and a real scan instead).
   * Michell ring: the cited criterion (Goriely 2006) evaluated in mpmath; no independent method.
   * Prandtl/Michell cantilever: gamma = 2 j, j the first positive zero of mpmath.besselj(-1/4, x),
     cross-checked against odefun shooting on phi'' + gamma^2 (1 - s)^2 phi = 0, phi(0) = 0,
@@ -130,6 +134,29 @@ def greenhill_moment(Bs, Ls, Ps, guess):
     return M.real
 
 
+def greenhill_semitangential_moment(Bs, Ls, Ps, guess):
+    # Semi-tangential end torques: i B w'' + (M/2) w' = 0 at both pins (twisted_rod.hpp 3b).
+    # Shooting on B w''' - i M w'' + P w' = -N from w(0) = 0, w'(0) = beta, w''(0) = i M beta/(2B)
+    # for the two unknowns (beta, N) = (1, 0) and (0, 1); the 2 x 2 determinant of (w(L),
+    # i B w''(L) + (M/2) w'(L)) vanishes at the critical M (findroot in complex M; the imaginary part
+    # is asserted ~0).
+    B, L, P = d(Bs), d(Ls), d(Ps)
+
+    def end_conditions(M, beta, N):
+        sol = mp.odefun(lambda z, y: [y[1], y[2], (1j * M * y[2] - P * y[1] - N) / B], 0,
+                        [mp.mpc(0), mp.mpc(beta), 1j * M * beta / (2 * B)])
+        w, dw, ddw = sol(L)
+        return w, 1j * B * ddw + M / 2 * dw
+
+    def determinant(M):
+        a, b = end_conditions(M, 1, 0), end_conditions(M, 0, 1)
+        return a[0] * b[1] - a[1] * b[0]
+
+    M = mp.findroot(determinant, mp.mpc(guess, 0.01))
+    assert abs(M.imag) < TOL, M
+    return M.real
+
+
 # ---- Prandtl cantilever ------------------------------------------------------------------------
 def prandtl_gamma():
     gamma = 2 * mp.findroot(lambda x: mp.besselj(mp.mpf(-1) / 4, x), 2)
@@ -176,6 +203,12 @@ def main():
         # start: 0.98 x the closed form (only a starting point; the root is the ODE's)
         guess = mp.mpf("0.98") * 2 * d(Bs) * mp.sqrt((mp.pi / d(Ls)) ** 2 - d(Ps) / d(Bs))
         print(f"greenhill_moment,,{Bs},,,,{Ls},,,{Ps},,{fmt(greenhill_moment(Bs, Ls, Ps, guess))}")
+    # semi-tangential: start at 0.78 x the axial closed form (the ratio at P = 0 is 4.911/2 pi)
+    for (Bs, Ls, Ps) in [("1.0", "1.0", "0.0"), ("1.3", "2.0", "2.0"), ("0.8", "0.5", "-5.0"), ("2.0", "3.0", "1.5"),
+                         ("0.9", "1.7", "-0.6")]:
+        guess = mp.mpf("0.78") * 2 * d(Bs) * mp.sqrt((mp.pi / d(Ls)) ** 2 - d(Ps) / d(Bs))
+        value = greenhill_semitangential_moment(Bs, Ls, Ps, guess)
+        print(f"greenhill_semitangential_moment,,{Bs},,,,{Ls},,,{Ps},,{fmt(value)}")
     for (Bs, Cs, Ls) in [("1.0", "1.0", repr(2 * float(mp.pi))), ("1.0", "0.5", "1.0"), ("1.3", "0.9", "3.7")]:
         B, C, L = d(Bs), d(Cs), d(Ls)
         print(f"michell_twist_angle,,{Bs},{Cs},,,{Ls},,,,,{fmt(2 * mp.pi * mp.sqrt(3) * B / C)}")

@@ -4,14 +4,15 @@
 // Oracle: tests/data/twisted_rod_reference.csv from tests/data/make_twisted_rod_table.py (mpmath,
 // 40 digits, at the exact double inputs; independent methods: mpmath.diff of the helical curve and
 // quad for the end shortening, 2-D findroot on the finite-rod equations in (m, t), complex shooting
-// for Greenhill, besselj zero + odefun shooting for gamma). Error unit: eps relative to
+// for Greenhill (second- and third-order, axial and semi-tangential end torques), besselj zero + odefun shooting for gamma). Error unit: eps relative to
 // max(|expected|, 1) (in_epsilons). Tolerances:
 //  - helical curve: a sqrt, sin, cos, cosh, tanh and products, each correctly rounded to ~1 ulp; the
 //    argument omega s carries ~|omega s| eps and 4BT - M^2 amplifies by 4BT/(4BT - M^2) (<= 11 in
 //    the table, where it enters through a square root, ~5) -> 16 eps;
 //  - finite rod: the angle theta to a 4 eps bracket (TOMS 748), conditioned by Phi/(theta f'(theta))
 //    (<= ~3 in the table), then m, t, alpha from sin/cos of theta -> 16 eps;
-//  - Greenhill, Michell, gamma sqrt(EI GJ)/L^2: a handful of roundings -> 8 eps;
+//  - Greenhill, Michell, gamma sqrt(EI GJ)/L^2: a handful of roundings -> 8 eps; the semi-tangential
+//    moment is a root to a 4 eps bracket of a determinant whose value is well conditioned -> 8 eps;
 //  - gamma: root of the Frobenius series to a 4 eps bracket, series error ~4 eps / |g'| -> 8 eps.
 // Measured (x86-64 Release, GCC 12): helical 2.9, finite 1.8, Greenhill 1.7, Michell 0.7, gamma and
 // P_cr 1.0 eps (the "[ summary  ]" line).
@@ -78,6 +79,9 @@ double evaluate(const std::vector<std::string>& row, double b_perturbation, Fami
   } else if (name == "greenhill_moment") {
     family = kGreenhill;
     return ref::greenhill_critical_moment({B, number(kL), number(kP)});
+  } else if (name == "greenhill_semitangential_moment") {
+    family = kGreenhill;
+    return ref::greenhill_semitangential_critical_moment({B, number(kL), number(kP)});
   } else if (starts_with(name, "michell_")) {
     family = kMichell;
     const auto sol = ref::michell_ring({B, number(kC), number(kL)});
@@ -117,7 +121,7 @@ TableCheck check_table(double b_perturbation) {
 
 TEST(TwistedRodReference, MatchesMpmathTable) {
   const TableCheck check = check_table(0.0);
-  const int expected_rows[kFamilies] = {136, 30, 4, 6, 3};
+  const int expected_rows[kFamilies] = {136, 30, 9, 6, 3};
   std::cout << "[ summary  ] max error (eps):";
   for (int f = 0; f < kFamilies; ++f) {
     EXPECT_EQ(check.rows[f], expected_rows[f]) << kFamilyName[f];
@@ -227,6 +231,24 @@ TEST(TwistedRodReference, GreenhillMomentAndLoadAreInverse) {
     const double M = ref::greenhill_critical_moment(column);
     EXPECT_NEAR(ref::greenhill_critical_load(column, M), P, 16 * kEpsilon * (1 + std::abs(P))) << P;
   }
+}
+
+TEST(TwistedRodReference, GreenhillSemiTangentialScalesAndIsContinuousAtZeroLoad) {
+  // M_cr L/B = 4.911287725758880608 (mpmath; x/2 + arctan(x/6) = pi at P = 0) for any B, L: 8 eps
+  const double x = 4.911287725758880608;
+  EXPECT_TRUE(is_close(ref::greenhill_semitangential_critical_moment({1.3, 0.7, 0.0}) * 0.7 / 1.3, x, 8 * kEpsilon, 0.0));
+  EXPECT_NEAR(x / 2 + std::atan(x / 6), std::numbers::pi, 4 * kEpsilon);
+  // P -> 0 from either side: the basis function (e^{i k2 s} - 1 - i k2 s)/(i k2)^2 -> s^2/2 has no
+  // cancellation, so M_cr(P) is smooth through 0: dM/dP ~ -0.4 L/... here, so |P| = 1e-9 moves it by
+  // < 1e-9; a basis that degenerated (1, s, e^{i k1 s}, e^{i k2 s}) would lose ~eps/|k2 L| instead.
+  const double m0 = ref::greenhill_semitangential_critical_moment({1.0, 1.0, 0.0});
+  for (double P : {-1e-9, 1e-9}) EXPECT_NEAR(ref::greenhill_semitangential_critical_moment({1.0, 1.0, P}), m0, 1e-9) << P;
+  // below the axial (Greenhill) moment at every load, and equal to neither
+  for (double P : {-4.0, 0.0, 5.0}) {
+    const ref::GreenhillColumn column{1.0, 1.0, P};
+    EXPECT_LT(ref::greenhill_semitangential_critical_moment(column), 0.85 * ref::greenhill_critical_moment(column)) << P;
+  }
+  EXPECT_THROW(ref::greenhill_semitangential_critical_moment({1.0, 1.0, 10.0}), rodvv::InputError);  // > Euler 9.87
 }
 
 TEST(TwistedRodReference, MichellAndCantileverFormulas) {

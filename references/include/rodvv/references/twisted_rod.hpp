@@ -42,6 +42,20 @@
 //         M_cr = 2 B sqrt((pi/L)^2 - P/B)   (P < pi^2 B/L^2),   P_cr = B ((pi/L)^2 - (M/2B)^2).
 //     The end moment is Greenhill's constant axial vector; other end-moment models (semi-tangential,
 //     quasi-tangential) are different problems (Ziegler 1977), so a solver must apply the same one.
+//  3b. The same column with SEMI-TANGENTIAL end torques (Ziegler 1977): the end moment is
+//     M (e_z + w'/2), half-way between the axial vector and the rotated tangent. It is conservative,
+//     and it is what a pinned end whose cross-section rotation is held by parallel transport from
+//     the support's axis applies (a discrete elastic rod's twist-held pinned end): the reaction
+//     couple that keeps the section's angle about t fixed while t tilts from e_z has the
+//     perpendicular part -(M/2) w' relative to t (the transported frame turns about t at second
+//     order only). Moment balance (complex w = u + i v, lateral end force N):
+//         B w''' - i M w'' + P w' = -N,   w(0) = w(L) = 0,   i B w'' + (M/2) w' = 0 at s = 0, L,
+//     (axial torque: i B w'' + M w' = 0 there, which gives 3.). With k1,2 the roots of
+//     B k^2 - M k - P = 0, w = a + b s + d1 e^{i k1 s} + d2 (e^{i k2 s} - 1 - i k2 s)/(i k2)^2 (the last
+//     tends to s^2/2 as P -> 0), and the 4 x 4 determinant times e^{-i M L/(2B)} is purely imaginary
+//     for M^2 + 4 B P > 0: M_cr is the first sign change of its imaginary part above
+//     max(0, 2 sqrt(-B P)), found by a scan and TOMS 748. At P = 0, x = M_cr L/B solves
+//     x/2 + arctan(x/6) = pi: x = 4.911287725758880608 (mpmath), not 2 pi.
 //  4. Michell's twisted ring (Michell 1889/90; Goriely 2006, J. Elasticity 84:281; PHYSICS.md §7.2):
 //     a closed ring of length L = 2 pi R (bending B = Goriely's A, twist C) is stable iff its total
 //     twist angle Phi < Phi_c = 2 pi sqrt(3) B/C (Tw < sqrt(3) B/C turns), i.e. iff the twisting
@@ -127,6 +141,8 @@ struct GreenhillColumn {
 double greenhill_critical_moment(const GreenhillColumn& column);  // M_cr = 2B sqrt((pi/L)^2 - P/B)
 // P_cr = B ((pi/L)^2 - (M/2B)^2) for the twisting moment M (finite); column.P is not used.
 double greenhill_critical_load(const GreenhillColumn& column, double M);
+// 3b: the critical twisting moment with semi-tangential end torques (P < pi^2 B/L^2, as above).
+double greenhill_semitangential_critical_moment(const GreenhillColumn& column);
 
 // ---- 4. Michell ring ------------------------------------------------------------------------------
 struct MichellRing {
