@@ -123,47 +123,64 @@ Complex exp_ratio_2(Complex z) {
   return sum;
 }
 
-// Im(det(A(M)) e^{-i M L/(2B)}) of the semi-tangential column (header, 3b): zero at a critical moment.
-double semitangential_determinant(const GreenhillColumn& c, double M) {
+enum class ColumnEnds { PinnedSemiTangential, Clamped };
+
+// Im(det(A(M)) e^{-i M L/(2B)}) of the linearised column (header, 3b and 3c): zero at a critical moment.
+double column_determinant(const GreenhillColumn& c, ColumnEnds ends, double M) {
   const double B = c.B, L = c.L, root = std::sqrt(M * M + 4.0 * B * c.P);
   const double k1 = (M + root) / (2.0 * B), k2 = -2.0 * c.P / (M + root);  // k1 k2 = -P/B without cancellation
   const Complex i(0.0, 1.0), e1 = std::exp(i * k1 * L), z2 = i * k2 * L;
-  const double half = 0.5 * M;  // the semi-tangential end moment's share: i B w'' + (M/2) w' = 0
-  const Complex end1 = -i * B * k1 * k1 + half * i * k1;  // (i B d^2/ds^2 + (M/2) d/ds) e^{i k1 s} at s = 0
+  // columns: w = a + b s + d1 e^{i k1 s} + d2 phi2(s), phi2 = (e^{i k2 s} - 1 - i k2 s)/(i k2)^2,
+  // phi2(L) = L^2 g2(z2), phi2'(L) = L g1(z2), phi2''(L) = e^{z2}; phi2 = phi2' = 0, phi2'' = 1 at s = 0
   Eigen::Matrix4cd a;
-  a << 1.0, 0.0, 1.0, 0.0,                                        // w(0) = 0
-      1.0, L, e1, L * L * exp_ratio_2(z2),                        // w(L) = 0
-      0.0, half, end1, i * B,                                     // moment at s = 0
-      0.0, half, end1 * e1, i * B * std::exp(z2) + half * L * exp_ratio_1(z2);  // moment at s = L
+  a.row(0) << 1.0, 0.0, 1.0, 0.0;                        // w(0) = 0
+  a.row(1) << 1.0, L, e1, L * L * exp_ratio_2(z2);       // w(L) = 0
+  if (ends == ColumnEnds::Clamped) {
+    a.row(2) << 0.0, 1.0, i * k1, 0.0;                   // w'(0) = 0
+    a.row(3) << 0.0, 1.0, i * k1 * e1, L * exp_ratio_1(z2);  // w'(L) = 0
+  } else {
+    const double half = 0.5 * M;  // the semi-tangential end moment's share: i B w'' + (M/2) w' = 0
+    const Complex end1 = -i * B * k1 * k1 + half * i * k1;  // (i B d^2/ds^2 + (M/2) d/ds) e^{i k1 s} at s = 0
+    a.row(2) << 0.0, half, end1, i * B;
+    a.row(3) << 0.0, half, end1 * e1, i * B * std::exp(z2) + half * L * exp_ratio_1(z2);
+  }
   return (a.determinant() * std::exp(-i * M * L / (2.0 * B))).imag();
+}
+
+// The first sign change of column_determinant above the moment where k1,2 become real (for tension,
+// M^2 > -4 B P: below, the straight rod is stable, as the helical threshold M^2 = 4 B T says): a scan
+// in steps of pi B/(16 L), 1/32 of the spacing of the axial problem's successive roots, then TOMS 748.
+double first_critical_moment(const GreenhillColumn& column, ColumnEnds ends, double euler, const char* method) {
+  require_positive("B", column.B);
+  require_positive("L", column.L);
+  require_finite("P", column.P);
+  if (!(column.P < euler))
+    throw InputError("P", "invalid parameter 'P' = " + format_value(column.P) + ": must be below the Euler load " +
+                              (ends == ColumnEnds::Clamped ? "4 pi^2 B / L^2 = " : "pi^2 B / L^2 = ") +
+                              format_value(euler));
+  const double step = kPi * column.B / (16.0 * column.L);
+  double low = (column.P < 0.0 ? 2.0 * std::sqrt(-column.B * column.P) : 0.0) + 1e-3 * step;
+  const auto f = [&](double M) { return column_determinant(column, ends, M); };
+  double f_low = f(low);
+  for (int n = 0; n < 4096; ++n) {
+    const double high = low + step, f_high = f(high);
+    if ((f_low < 0.0) != (f_high < 0.0)) return detail::solve_bracketed(method, f, low, high, f_low, f_high);
+    low = high;
+    f_low = f_high;
+  }
+  throw SolverError(method, std::string(method) + ": no sign change of the determinant in 4096 steps of pi B/(16 L)",
+                    4096, f_low);
 }
 }  // namespace
 
 double greenhill_semitangential_critical_moment(const GreenhillColumn& column) {
-  require_positive("B", column.B);
-  require_positive("L", column.L);
-  require_finite("P", column.P);
   const double euler = kPi * kPi * column.B / (column.L * column.L);
-  if (!(column.P < euler))
-    throw InputError("P", "invalid parameter 'P' = " + format_value(column.P) +
-                              ": must be below the Euler load pi^2 B / L^2 = " + format_value(euler));
-  // Scan upward from where the roots k1,2 are real (for tension, M^2 > -4 B P: below, the straight
-  // rod is stable, as the helical threshold M^2 = 4 B T says) in steps of pi B/(16 L), 1/32 of the
-  // spacing of the axial problem's successive roots, then TOMS 748 on the first sign change.
-  const double step = kPi * column.B / (16.0 * column.L);
-  double low = (column.P < 0.0 ? 2.0 * std::sqrt(-column.B * column.P) : 0.0) + 1e-3 * step;
-  const auto f = [&](double M) { return semitangential_determinant(column, M); };
-  double f_low = f(low);
-  for (int n = 0; n < 4096; ++n) {
-    const double high = low + step, f_high = f(high);
-    if ((f_low < 0.0) != (f_high < 0.0))
-      return detail::solve_bracketed("Greenhill semi-tangential moment", f, low, high, f_low, f_high);
-    low = high;
-    f_low = f_high;
-  }
-  throw SolverError("Greenhill semi-tangential moment",
-                    "Greenhill semi-tangential moment: no sign change of the determinant in 4096 steps of pi B/(16 L)",
-                    4096, f_low);
+  return first_critical_moment(column, ColumnEnds::PinnedSemiTangential, euler, "Greenhill semi-tangential moment");
+}
+
+double clamped_twisted_column_critical_moment(const GreenhillColumn& column) {
+  const double euler = 4.0 * kPi * kPi * column.B / (column.L * column.L);
+  return first_critical_moment(column, ColumnEnds::Clamped, euler, "clamped twisted column moment");
 }
 
 MichellRingSolution michell_ring(const MichellRing& ring) {

@@ -23,7 +23,7 @@ the table measures the C++ algorithm, not the rounding of its inputs. 40 digits;
   * Greenhill with semi-tangential end torques: shooting on the third-order moment balance
     B w''' - i M w'' + P w' = -N (two shots for the unknown slope and lateral force), findroot on
     the 2 x 2 determinant of the end conditions in complex M (the C++ code uses the closed-form
-    exponential solution and a real scan instead).
+    exponential solution and a real scan instead). Clamped ends (w = w' = 0): the same shooting.
   * Michell ring: the cited criterion (Goriely 2006) evaluated in mpmath; no independent method.
   * Prandtl/Michell cantilever: gamma = 2 j, j the first positive zero of mpmath.besselj(-1/4, x),
     cross-checked against odefun shooting on phi'' + gamma^2 (1 - s)^2 phi = 0, phi(0) = 0,
@@ -157,6 +157,27 @@ def greenhill_semitangential_moment(Bs, Ls, Ps, guess):
     return M.real
 
 
+def clamped_column_moment(Bs, Ls, Ps, guess):
+    # Clamped ends (twisted_rod.hpp 3c): shooting on B w''' - i M w'' + P w' = -N from w(0) = w'(0) = 0,
+    # w''(0) = gamma for the unknowns (gamma, N) = (1, 0) and (0, 1); the 2 x 2 determinant of
+    # (w(L), w'(L)) vanishes at the critical M.
+    B, L, P = d(Bs), d(Ls), d(Ps)
+
+    def end_values(M, gamma, N):
+        sol = mp.odefun(lambda z, y: [y[1], y[2], (1j * M * y[2] - P * y[1] - N) / B], 0,
+                        [mp.mpc(0), mp.mpc(0), mp.mpc(gamma)])
+        w, dw, _ = sol(L)
+        return w, dw
+
+    def determinant(M):
+        a, b = end_values(M, 1, 0), end_values(M, 0, 1)
+        return a[0] * b[1] - a[1] * b[0]
+
+    M = mp.findroot(determinant, mp.mpc(guess, 0.01))
+    assert abs(M.imag) < TOL, M
+    return M.real
+
+
 # ---- Prandtl cantilever ------------------------------------------------------------------------
 def prandtl_gamma():
     gamma = 2 * mp.findroot(lambda x: mp.besselj(mp.mpf(-1) / 4, x), 2)
@@ -209,6 +230,13 @@ def main():
         guess = mp.mpf("0.78") * 2 * d(Bs) * mp.sqrt((mp.pi / d(Ls)) ** 2 - d(Ps) / d(Bs))
         value = greenhill_semitangential_moment(Bs, Ls, Ps, guess)
         print(f"greenhill_semitangential_moment,,{Bs},,,,{Ls},,,{Ps},,{fmt(value)}")
+    # clamped: start at 1.43 x the pinned axial closed form (the ratio at P = 0 is 8.987/2 pi), the
+    # Euler load of the clamped column being 4 pi^2 B/L^2
+    for (Bs, Ls, Ps) in [("1.0", "1.0", "0.0"), ("1.3", "2.0", "2.0"), ("0.8", "0.5", "-5.0"), ("2.0", "3.0", "6.0"),
+                         ("0.9", "1.7", "-0.6")]:
+        B, L, P = d(Bs), d(Ls), d(Ps)
+        guess = mp.mpf("1.43") * 2 * B * mp.sqrt((mp.pi / L) ** 2 - P / (4 * B))
+        print(f"clamped_column_moment,,{Bs},,,,{Ls},,,{Ps},,{fmt(clamped_column_moment(Bs, Ls, Ps, guess))}")
     for (Bs, Cs, Ls) in [("1.0", "1.0", repr(2 * float(mp.pi))), ("1.0", "0.5", "1.0"), ("1.3", "0.9", "3.7")]:
         B, C, L = d(Bs), d(Cs), d(Ls)
         print(f"michell_twist_angle,,{Bs},{Cs},,,{Ls},,,,,{fmt(2 * mp.pi * mp.sqrt(3) * B / C)}")

@@ -10,6 +10,7 @@
 
 #include "case_test_support.hpp"
 #include "rodvv/references/elastica.hpp"
+#include "rodvv/references/twisted_rod.hpp"
 #include "rodvv/solvers/rod3d/solution.hpp"
 #include "rodvv/solvers/rod3d/statics.hpp"
 
@@ -104,6 +105,36 @@ TEST(Rod3dGatesHaveTeeth, SwappedBendingAxesAreSeen) {
   const auto solution = rod::make_solution(model, rod::solve_static(model, rod::make_straight_state(model), options).state);
   const double w = (solution.vertex_position.back() - model.root.position).dot(model.root.frame.col(2));
   EXPECT_GT(std::abs(w - rodvv::references::cantilever_tip({1.3, 1.7, P}).w), 100 * 1.0161e-4);
+}
+
+}  // namespace
+
+namespace {
+
+// rod3d/greenhill: the clamped column's second order claimed as fourth or first fails; and the pinned
+// column compared with Greenhill's axial-torque moment (2 pi B/L at P = 0) instead of the
+// semi-tangential one its twist-held ends realize fails the magnitude gate: the two end models
+// differ by 22 %, far above the 2 x 4.5e-3 bound, so the case tells them apart.
+TEST(Rod3dGatesHaveTeeth, GreenhillOrderAndEndModelAreSeen) {
+  for (double claimed : {4.0, 1.0}) {
+    Case wrong = named("rod3d/greenhill");
+    wrong.gates = {order_gate("critical_moment_clamped_unloaded_relative", claimed, "wrong claim")};
+    EXPECT_FALSE(run_at_default_levels(wrong).passed()) << claimed;
+  }
+  Case axial = named("rod3d/greenhill");
+  const LevelRunner original = axial.run_level;
+  axial.run_level = [original](const Parameters& p, double level) {
+    LevelOutput out = original(p, level);
+    const double B = parameter_value(p, "B"), L = parameter_value(p, "L");
+    const double semi = rodvv::references::greenhill_semitangential_critical_moment({B, L, 0.0});
+    const double greenhill = rodvv::references::greenhill_critical_moment({B, L, 0.0});
+    auto& sample = out.metrics.at("critical_moment_pinned_unloaded_relative");
+    sample.computed *= semi / greenhill;  // M_cr / (2 pi B/L)
+    *sample.error = std::abs(sample.computed - 1.0);
+    return out;
+  };
+  EXPECT_FALSE(run_at_default_levels(axial).passed());
+  EXPECT_TRUE(run_at_default_levels(named("rod3d/greenhill")).passed());
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 // Oracle: tests/data/twisted_rod_reference.csv from tests/data/make_twisted_rod_table.py (mpmath,
 // 40 digits, at the exact double inputs; independent methods: mpmath.diff of the helical curve and
 // quad for the end shortening, 2-D findroot on the finite-rod equations in (m, t), complex shooting
-// for Greenhill (second- and third-order, axial and semi-tangential end torques), besselj zero + odefun shooting for gamma). Error unit: eps relative to
+// for Greenhill (second- and third-order: axial and semi-tangential end torques, clamped ends), besselj zero + odefun shooting for gamma). Error unit: eps relative to
 // max(|expected|, 1) (in_epsilons). Tolerances:
 //  - helical curve: a sqrt, sin, cos, cosh, tanh and products, each correctly rounded to ~1 ulp; the
 //    argument omega s carries ~|omega s| eps and 4BT - M^2 amplifies by 4BT/(4BT - M^2) (<= 11 in
@@ -82,6 +82,9 @@ double evaluate(const std::vector<std::string>& row, double b_perturbation, Fami
   } else if (name == "greenhill_semitangential_moment") {
     family = kGreenhill;
     return ref::greenhill_semitangential_critical_moment({B, number(kL), number(kP)});
+  } else if (name == "clamped_column_moment") {
+    family = kGreenhill;
+    return ref::clamped_twisted_column_critical_moment({B, number(kL), number(kP)});
   } else if (starts_with(name, "michell_")) {
     family = kMichell;
     const auto sol = ref::michell_ring({B, number(kC), number(kL)});
@@ -121,7 +124,7 @@ TableCheck check_table(double b_perturbation) {
 
 TEST(TwistedRodReference, MatchesMpmathTable) {
   const TableCheck check = check_table(0.0);
-  const int expected_rows[kFamilies] = {136, 30, 9, 6, 3};
+  const int expected_rows[kFamilies] = {136, 30, 14, 6, 3};
   std::cout << "[ summary  ] max error (eps):";
   for (int f = 0; f < kFamilies; ++f) {
     EXPECT_EQ(check.rows[f], expected_rows[f]) << kFamilyName[f];
@@ -249,6 +252,19 @@ TEST(TwistedRodReference, GreenhillSemiTangentialScalesAndIsContinuousAtZeroLoad
     EXPECT_LT(ref::greenhill_semitangential_critical_moment(column), 0.85 * ref::greenhill_critical_moment(column)) << P;
   }
   EXPECT_THROW(ref::greenhill_semitangential_critical_moment({1.0, 1.0, 10.0}), rodvv::InputError);  // > Euler 9.87
+}
+
+TEST(TwistedRodReference, ClampedTwistedColumn) {
+  // P = 0: M_cr L/B = 2 y, tan y = y (y = 4.4934094579090641753): 8 eps
+  const double x = 8.98681891581812835;
+  EXPECT_TRUE(is_close(ref::clamped_twisted_column_critical_moment({0.7, 2.3, 0.0}) * 2.3 / 0.7, x, 8 * kEpsilon, 0.0));
+  EXPECT_NEAR(std::tan(x / 2) - x / 2, 0.0, 64 * kEpsilon * x);  // tan is ill-conditioned near its pole: 64 eps
+  // the moment falls to 0 at the clamped Euler load 4 pi^2 B/L^2 (39.48 here) and rises under tension
+  const double m_near_euler = ref::clamped_twisted_column_critical_moment({1.0, 1.0, 39.0});
+  EXPECT_LT(m_near_euler, 0.25 * x);
+  EXPECT_GT(ref::clamped_twisted_column_critical_moment({1.0, 1.0, -5.0}), x);
+  EXPECT_THROW(ref::clamped_twisted_column_critical_moment({1.0, 1.0, 40.0}), rodvv::InputError);
+  EXPECT_THROW(ref::clamped_twisted_column_critical_moment({-1.0, 1.0, 0.0}), rodvv::InputError);
 }
 
 TEST(TwistedRodReference, MichellAndCantileverFormulas) {

@@ -19,6 +19,7 @@ void register_rod3d_cases(Registry& registry) {
   rod3d_cases::add_helical_buckling(registry);
   rod3d_cases::add_bathe_bolourchi(registry);
   rod3d_cases::add_lateral_torsional(registry);
+  rod3d_cases::add_greenhill(registry);
 }
 
 }  // namespace rodvv::harness

@@ -56,6 +56,10 @@
 //     for M^2 + 4 B P > 0: M_cr is the first sign change of its imaginary part above
 //     max(0, 2 sqrt(-B P)), found by a scan and TOMS 748. At P = 0, x = M_cr L/B solves
 //     x/2 + arctan(x/6) = pi: x = 4.911287725758880608 (mpmath), not 2 pi.
+//  3c. The same column with CLAMPED ends (w = w' = 0 at s = 0, L; the end sections turned about the
+//     fixed axis, so no end-torque model enters): same solution, determinant and scan, P below the
+//     clamped Euler load 4 pi^2 B/L^2. At P = 0, x = M_cr L/B = 2 y with tan y = y:
+//     x = 8.98681891581812835 (the twisted clamped rod's 2.86 pi).
 //  4. Michell's twisted ring (Michell 1889/90; Goriely 2006, J. Elasticity 84:281; PHYSICS.md §7.2):
 //     a closed ring of length L = 2 pi R (bending B = Goriely's A, twist C) is stable iff its total
 //     twist angle Phi < Phi_c = 2 pi sqrt(3) B/C (Tw < sqrt(3) B/C turns), i.e. iff the twisting
@@ -143,6 +147,8 @@ double greenhill_critical_moment(const GreenhillColumn& column);  // M_cr = 2B s
 double greenhill_critical_load(const GreenhillColumn& column, double M);
 // 3b: the critical twisting moment with semi-tangential end torques (P < pi^2 B/L^2, as above).
 double greenhill_semitangential_critical_moment(const GreenhillColumn& column);
+// 3c: the critical twisting moment of the clamped column (P < 4 pi^2 B/L^2).
+double clamped_twisted_column_critical_moment(const GreenhillColumn& column);
 
 // ---- 4. Michell ring ------------------------------------------------------------------------------
 struct MichellRing {
