@@ -138,3 +138,24 @@ TEST(Rod3dGatesHaveTeeth, GreenhillOrderAndEndModelAreSeen) {
 }
 
 }  // namespace
+
+namespace {
+
+// superhelix/bathe-bolourchi is checked against the nodal rod: a tip off by 0.01 (what a 2e-4
+// relative error in EI gives: u ~ P L^3/EI ~ 50) fails the nodal-comparison bound (2 x 2.2e-3 at
+// N = 32), and the unmodified case passes.
+TEST(Rod3dGatesHaveTeeth, SuperHelixBatheBolourchiSeesTheNodalRod) {
+  Case wrong = named("superhelix/bathe-bolourchi");
+  const LevelRunner original = wrong.run_level;
+  wrong.run_level = [original](const Parameters& p, double level) {
+    LevelOutput out = original(p, level);
+    auto& sample = out.metrics.at("tip_along_load_vs_nodal");
+    sample.computed += 0.01;
+    *sample.error = std::abs(sample.computed - *sample.reference);
+    return out;
+  };
+  EXPECT_FALSE(run_at_default_levels(wrong).passed());
+  EXPECT_TRUE(run_at_default_levels(named("superhelix/bathe-bolourchi")).passed());
+}
+
+}  // namespace

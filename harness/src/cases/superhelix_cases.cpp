@@ -45,6 +45,7 @@
 
 #include "rodvv/common/errors.hpp"
 #include "case_builder.hpp"
+#include "superhelix/superhelix_problems.hpp"
 #include "rodvv/harness/registry.hpp"
 #include "rodvv/harness/trajectory_metrics.hpp"
 #include "rodvv/invariants/noether3d.hpp"
@@ -61,6 +62,14 @@
 
 namespace rodvv::harness {
 
+namespace superhelix_cases {
+const char* const kMethod =
+    "Super-Helix (Bertails et al. 2006): piecewise-constant twist and curvatures, closed-form helical "
+    "elements (singularity-free exponential form); statics by Newton (finite-difference Jacobian, "
+    "line search, load stepping); Gauss-Legendre mass quadrature (4 points per element) of the translational "
+    "and rotational inertia of the cross-sections";
+}  // namespace superhelix_cases
+
 namespace {
 
 namespace ref = rodvv::references;
@@ -68,11 +77,7 @@ namespace sh = rodvv::solvers::superhelix;
 constexpr double kPi = std::numbers::pi;
 constexpr double kEps = 2.220446049250313e-16;
 
-constexpr const char* kMethod =
-    "Super-Helix (Bertails et al. 2006): piecewise-constant twist and curvatures, closed-form helical "
-    "elements (singularity-free exponential form); statics by Newton (finite-difference Jacobian, "
-    "line search, load stepping); Gauss-Legendre mass quadrature (4 points per element) of the translational "
-    "and rotational inertia of the cross-sections";
+using superhelix_cases::kMethod;
 
 // The shared case builder (case_builder.hpp): samples, metric specs, measured bounds, the tilted
 // clamp frame and the 3-D Noether metrics.
@@ -939,6 +944,7 @@ void register_superhelix_cases(Registry& registry) {
                           "the two paths solve the same linear system (issue 5: <= 1e-12)")},
         run_accelerated_root));
   }
+  superhelix_cases::add_bathe_bolourchi(registry);
 }
 
 }  // namespace rodvv::harness

@@ -1,0 +1,13 @@
+#pragma once
+// The Super-Helix cases kept one problem per file (this folder); the older ones live in
+// ../superhelix_cases.cpp, which registers these too.
+#include "rodvv/harness/registry.hpp"
+
+namespace rodvv::harness::superhelix_cases {
+
+// The method description every Super-Helix case carries.
+extern const char* const kMethod;
+
+void add_bathe_bolourchi(Registry& registry);  // 45-degree bend, out-of-plane tip load
+
+}  // namespace rodvv::harness::superhelix_cases
