@@ -1,0 +1,128 @@
+#include "rodvv/solvers/rod3d/self_contact.hpp"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
+#include "rodvv/solvers/contact/segment_proximity.hpp"
+#include "taylor2.hpp"
+
+namespace rodvv::solvers::rod3d {
+
+namespace {
+
+constexpr int kPairDofs = 12;  // a0, a1, b0, b1
+using PairJet = taylor2::Jet<kPairDofs, 2>;
+
+void validate(const SelfContact& contact, double edge_length) {
+  require_positive("radius", contact.radius);
+  require_positive("stiffness", contact.stiffness);
+  require_positive("edge_length", edge_length);
+}
+
+struct JetVector {
+  std::array<PairJet, 3> c;
+};
+JetVector operator-(const JetVector& a, const JetVector& b) {
+  return {{a.c[0] - b.c[0], a.c[1] - b.c[1], a.c[2] - b.c[2]}};
+}
+PairJet dot(const JetVector& a, const JetVector& b) { return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2]; }
+
+// The pair distance as a jet in the 12 endpoint coordinates, within the active set of `closest`:
+// a parameter at exactly 0 or 1 is held there, an interior one follows its normal equation.
+PairJet distance_jet(const std::array<Vec3, 4>& ends, const contact::SegmentClosestPoints& closest) {
+  std::array<JetVector, 4> p;
+  for (int k = 0; k < 4; ++k)
+    for (int c = 0; c < 3; ++c) p[k].c[c] = PairJet::variable(ends[k][c], 3 * k + c);
+  const JetVector d1 = p[1] - p[0], d2 = p[3] - p[2], r = p[0] - p[2];
+  const PairJet A = dot(d1, d1), B = dot(d1, d2), E = dot(d2, d2), C = dot(d1, r), F = dot(d2, r);
+  const bool s_free = closest.s > 0.0 && closest.s < 1.0, t_free = closest.t > 0.0 && closest.t < 1.0;
+  PairJet s(closest.s), t(closest.t);
+  if (s_free && t_free) {
+    const PairJet det = A * E - B * B;
+    s = (B * F - C * E) / det;
+    t = (A * F - B * C) / det;
+  } else if (t_free) {
+    t = (B * s + F) / E;
+  } else if (s_free) {
+    s = (B * t - C) / A;
+  }
+  JetVector gap;
+  for (int c = 0; c < 3; ++c) gap.c[c] = r.c[c] + s * d1.c[c] - t * d2.c[c];
+  return sqrt(dot(gap, gap));
+}
+
+std::vector<ContactPair> find_contacts(const SelfContact& contact, const std::vector<Vec3>& x, double edge_length) {
+  validate(contact, edge_length);
+  const double reach = 2.0 * contact.radius;
+  std::vector<ContactPair> pairs;
+  for (const auto& near : contact::segments_within(x, reach, contact_excluded_neighbours(contact.radius, edge_length))) {
+    const auto& cp = near.closest;
+    if (!(cp.distance < reach)) continue;
+    if (!(cp.distance > 0.0))
+      throw SolverError("rod3d self-contact", "segments " + std::to_string(near.first) + " and " +
+                                                  std::to_string(near.second) + " intersect (distance 0)",
+                        0, 0.0);
+    ContactPair pair;
+    pair.first = near.first;
+    pair.second = near.second;
+    pair.s = cp.s;
+    pair.t = cp.t;
+    pair.distance = cp.distance;
+    pair.normal = (cp.p - cp.q) / cp.distance;
+    pair.force = contact.stiffness * (reach - cp.distance) * (reach - cp.distance);
+    pairs.push_back(pair);
+  }
+  return pairs;
+}
+
+}  // namespace
+
+std::size_t contact_excluded_neighbours(double radius, double edge_length) {
+  require_positive("radius", radius);
+  require_positive("edge_length", edge_length);
+  return std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(std::numbers::pi * radius / edge_length)));
+}
+
+std::vector<ContactPair> self_contacts(const SelfContact& contact, const std::vector<Vec3>& x, double edge_length) {
+  return find_contacts(contact, x, edge_length);
+}
+
+double self_contact_energy(const SelfContact& contact, const std::vector<Vec3>& x, double edge_length) {
+  double energy = 0.0;
+  const double reach = 2.0 * contact.radius;
+  for (const auto& pair : find_contacts(contact, x, edge_length)) {
+    const double overlap = reach - pair.distance;
+    energy += contact.stiffness / 3.0 * overlap * overlap * overlap;
+  }
+  return energy;
+}
+
+void self_contact_derivatives(const SelfContact& contact, const std::vector<Vec3>& x, double edge_length,
+                              std::vector<Vec3>& gradient, std::vector<Eigen::Triplet<double>>* hessian) {
+  gradient.assign(x.size(), Vec3::Zero());
+  const double reach = 2.0 * contact.radius, k = contact.stiffness;
+  for (const auto& pair : find_contacts(contact, x, edge_length)) {
+    const std::array<std::size_t, 4> vertex{pair.first, pair.first + 1, pair.second, pair.second + 1};
+    const std::array<Vec3, 4> ends{x[vertex[0]], x[vertex[1]], x[vertex[2]], x[vertex[3]]};
+    contact::SegmentClosestPoints closest;
+    closest.s = pair.s;
+    closest.t = pair.t;
+    const PairJet d = distance_jet(ends, closest);
+    // phi = k/3 (2h - d)^3: phi' = -k (2h - d)^2, phi'' = 2 k (2h - d)
+    const double overlap = reach - d.v, d_phi = -k * overlap * overlap, dd_phi = 2.0 * k * overlap;
+    for (int a = 0; a < kPairDofs; ++a) gradient[vertex[a / 3]][a % 3] += d_phi * d.g[a];
+    if (!hessian) continue;
+    for (int a = 0; a < kPairDofs; ++a)
+      for (int b = 0; b < kPairDofs; ++b) {
+        const double value = dd_phi * d.g[a] * d.g[b] + d_phi * d.hessian(a, b);
+        if (value != 0.0)
+          hessian->emplace_back(int(3 * vertex[a / 3] + a % 3), int(3 * vertex[b / 3] + b % 3), value);
+      }
+  }
+}
+
+}  // namespace rodvv::solvers::rod3d
