@@ -382,6 +382,19 @@ void add_edges(const Context& c, VecX& r, Triplets* jac) {
   }
 }
 
+// The self-contact barrier (self_contact.hpp) on the evaluated positions: residual += dE/dx, Jacobian +=
+// its Hessian, mapped from vertex coordinates to the DofLayout.
+void add_self_contact(const Context& c, VecX& r, Triplets* jac) {
+  if (!has_self_contact(c.model)) return;
+  std::vector<Vec3> gradient;
+  Triplets hessian;
+  self_contact_derivatives(c.model.self_contact, c.state.position, c.ell, gradient, jac ? &hessian : nullptr);
+  for (std::size_t i = 0; i < gradient.size(); ++i) r.segment<3>(Eigen::Index(c.layout.vertex(i))) += gradient[i];
+  if (!jac) return;
+  const auto dof = [&](int coordinate) { return int(c.layout.vertex(std::size_t(coordinate) / 3)) + coordinate % 3; };
+  for (const auto& entry : hessian) jac->emplace_back(dof(entry.row()), dof(entry.col()), entry.value());
+}
+
 // Generalised loads times the load factor: residual -= Q, Jacobian -= dQ/dz.
 void add_loads(const Context& c, double load_factor, VecX& r, Triplets* jac) {
   const auto& m = c.model;
@@ -429,6 +442,7 @@ void assemble(const Context& c, double load_factor, VecX& r, Triplets* jac) {
     }
   }
   add_edges(c, r, jac);
+  add_self_contact(c, r, jac);
   add_loads(c, load_factor, r, jac);
 }
 
@@ -459,6 +473,7 @@ EnergyParts energy(const RodModel& model, const RodState& state) {
     }
   for (std::size_t i = 0; i <= model.elements; ++i) parts.gravity -= c.vertex_mass(i) * model.gravity.dot(state.position[i]);
   parts.tip_force = -model.end_force.dot(state.position[model.elements]);
+  if (has_self_contact(model)) parts.contact = self_contact_energy(model.self_contact, state.position, c.ell);
   return parts;
 }
 

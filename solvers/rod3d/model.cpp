@@ -50,6 +50,19 @@ void validate(const RodModel& model) {
   require_finite_vector("end_moment", model.end_moment);
   validate_end("root", model.root);
   validate_end("tip", model.tip);
+  if (has_self_contact(model)) {
+    require_positive("self_contact.radius", model.self_contact.radius);
+    require_positive("self_contact.stiffness", model.self_contact.stiffness);
+    // Segments within pi h of each other along the rod never count (self_contact.hpp): at least one
+    // pair must remain.
+    const std::size_t excluded = contact_excluded_neighbours(model.self_contact.radius, rest_edge_length(model));
+    if (excluded + 1 >= model.elements)
+      throw InputError("self_contact.radius",
+                       "invalid parameter 'self_contact.radius' = " + format_value(model.self_contact.radius) +
+                           ": must be below (N - 2) ebar / pi = " +
+                           format_value(double(model.elements - 2) * rest_edge_length(model) / 3.141592653589793) +
+                           " (a thicker rod of this length cannot touch itself)");
+  }
   if (model.tip.support == EndSupport::Clamped && model.root.support == EndSupport::Clamped)
     require_at_least("elements (both ends clamped)", model.elements, 3);
   if (is_inextensible(model) && model.root.support != EndSupport::Free && model.tip.support != EndSupport::Free &&

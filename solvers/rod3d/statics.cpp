@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <Eigen/Geometry>
+#include <Eigen/SparseLU>
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
@@ -19,7 +20,7 @@ namespace rodvv::solvers::rod3d {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-const std::string kMethod = "rod3d statics (Newton, banded LU, continuation)";
+const std::string kMethod = "rod3d statics (Newton, banded LU or sparse LU with self-contact, continuation)";
 
 // Where one supported end goes during continuation: from the initial state's pose (lambda = 0) to
 // the model's (lambda = 1).
@@ -171,7 +172,18 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
   NewtonOutcome outcome;
   VecX r;
   Eigen::SparseMatrix<double> jacobian;
-  elastica2d::BandedLU lu;
+  // The banded LU (O(N)) unless self-contact couples distant vertices; then a sparse LU with a
+  // fill-reducing column ordering (COLAMD), still about O(N) for a few contacts.
+  elastica2d::BandedLU banded;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> sparse;
+  const bool contact = has_self_contact(model);
+  const auto factorize = [&](Eigen::SparseMatrix<double>& a) {
+    if (!contact) return banded.factorize(a);
+    a.makeCompressed();
+    sparse.compute(a);
+    return sparse.info() == Eigen::Success;
+  };
+  const auto solve = [&](const VecX& b) -> VecX { return contact ? VecX(sparse.solve(b)) : VecX(banded.solve(b)); };
   const auto zero_held = [&](VecX& v) {
     for (std::size_t k = 0; k < held.size(); ++k)
       if (held[k]) v[Eigen::Index(k)] = 0.0;
@@ -193,8 +205,8 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
     jacobian.prune([&](Eigen::Index row, Eigen::Index, double) { return !held[std::size_t(row)]; });
     for (std::size_t k = 0; k < held.size(); ++k)
       if (held[k]) jacobian.coeffRef(Eigen::Index(k), Eigen::Index(k)) = 1.0;
-    if (!lu.factorize(jacobian)) return outcome;
-    const VecX dz = -lu.solve(r);
+    if (!factorize(jacobian)) return outcome;
+    const VecX dz = -solve(r);
     if (!dz.allFinite()) return outcome;
     ++outcome.iterations;
     if (at_floor) {
@@ -210,7 +222,12 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
       double twist_change = 0.0;
       RodState trial = displaced(model, state, alpha * dz, &twist_change);
       if (twist_change > 0.25 * std::numbers::pi) continue;
-      VecX r_trial = static_residual(model, trial, lambda);
+      VecX r_trial;
+      try {
+        r_trial = static_residual(model, trial, lambda);
+      } catch (const SolverError&) {
+        continue;  // the trial pushed two segments through each other (self_contact.hpp): shorter step
+      }
       zero_held(r_trial);
       const double measure = scaled_measure(model, r_trial, residual_scales(model, trial, lambda), held);
       if (std::isfinite(measure) && measure <= (1.0 - 1e-4 * alpha) * outcome.residual) {

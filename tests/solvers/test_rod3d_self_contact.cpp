@@ -6,12 +6,16 @@
 #include <cmath>
 #include <iostream>
 #include <random>
+#include <string>
 #include <vector>
+
+#include <numbers>
 
 #include <Eigen/Geometry>
 #include <Eigen/SparseCore>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/solvers/rod3d/model.hpp"
 #include "rodvv/solvers/rod3d/self_contact.hpp"
 
 namespace {
@@ -129,6 +133,106 @@ TEST(Rod3dSelfContact, ExcludedNeighboursAndBadInput) {
   const std::vector<Vec3> crossing{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 5, 0), Vec3(0.5, 5, 0), Vec3(0.5, -1, 0),
                                    Vec3(0.5, -2, 0)};
   EXPECT_THROW(rod::self_contacts(kContact, crossing, 1.0), rodvv::SolverError);
+  // In a rod model: both numbers positive, and a radius that leaves some pair of segments able to touch.
+  const auto parameter_of = [](const rod::RodModel& m) {
+    try {
+      rod::validate(m);
+    } catch (const rodvv::InputError& e) {
+      return e.parameter();
+    }
+    return std::string("none");
+  };
+  rod::RodModel m;
+  m.elements = 20;
+  m.length = 2.0;  // ebar = 0.1
+  m.self_contact = {0.05, 1e5};
+  EXPECT_EQ(parameter_of(m), "none");
+  m.self_contact = {0.05, 0.0};
+  EXPECT_EQ(parameter_of(m), "self_contact.stiffness");
+  m.self_contact = {-0.05, 1e5};
+  EXPECT_EQ(parameter_of(m), "self_contact.radius");
+  m.self_contact = {0.6, 1e5};  // pi h / ebar = 18.8 -> 19 excluded neighbours of 20 edges
+  EXPECT_EQ(parameter_of(m), "self_contact.radius");
+}
+
+}  // namespace
+
+#include "rodvv/invariants/noether3d.hpp"
+#include "rodvv/solvers/rod3d/solution.hpp"
+#include "rodvv/solvers/rod3d/discrete_energy.hpp"
+#include "rodvv/solvers/rod3d/statics.hpp"
+#include "rodvv/solvers/rod3d/state.hpp"
+
+namespace {
+
+// A racket: both ends clamped side by side (root at the origin along +x, tip at (0, 3h, 0) pointing
+// back along -x), both tilted towards the other strand, so the rod makes a loop whose two strands
+// press on each other in its neck: the barrier holds them apart. Started as a half circle (with
+// untilted clamps), the clamps are moved and turned by the continuation. No external load but the clamps and the contact, so H(s)
+// is constant along the whole rod, contact region included, up to the barrier's own field V_eff
+// (PHYSICS.md §1.2), which vanishes as k -> infinity.
+struct Racket {
+  rod::RodModel model;
+  rod::RodState start;
+};
+
+Racket racket(std::size_t elements, double stiffness) {
+  const double L = 2.0, h = 0.02;
+  Racket r;
+  auto& m = r.model;
+  m.elements = elements;
+  m.length = L;
+  m.stiffness = Vec3(0.7, 1.0, 1.3);
+  m.self_contact = {h, stiffness};
+  m.root.support = rod::EndSupport::Clamped;
+  m.root.position = Vec3::Zero();
+  // The clamps tilt both strands towards each other by beta: they cross 3h / (2 tan beta) = 0.044
+  // beyond the clamps (4 edges at N = 200) unless the barrier holds them apart.
+  const double beta = 0.6;
+  m.root.frame = Eigen::AngleAxisd(beta, Vec3::UnitZ()).toRotationMatrix();  // t = (cos, sin, 0), m1, m2 = e_z
+  m.tip.support = rod::EndSupport::Clamped;
+  m.tip.position = Vec3(0.0, 3.0 * h, 0.0);
+  m.tip.frame = Eigen::AngleAxisd(std::numbers::pi - beta, Vec3::UnitZ()).toRotationMatrix();  // t = (-cos, sin, 0)
+  // A half circle of length L from the root, turning left: with both ends clamped it is an exact
+  // equilibrium (constant curvature, zero force), from which the continuation brings the tip in.
+  const double radius = L / std::numbers::pi;
+  std::vector<Vec3> x(elements + 1);
+  for (std::size_t i = 0; i <= elements; ++i) {
+    const double a = rod::vertex_arclength(m, i) / radius;
+    x[i] = Vec3(radius * std::sin(a), radius * (1 - std::cos(a)), 0);
+  }
+  r.start = rod::make_state(x, Vec3(0, 1, 0), std::vector<double>(elements, 0.0));
+  r.start.multiplier.assign(elements, 0.0);
+  return r;
+}
+
+TEST(Rod3dSelfContact, RacketEquilibriumKeepsHThroughTheContact) {
+  // Measured at N = 100 (k = 1e6, 1e7, 1e8): 15, 10, 7 pairs; largest overlap 6.7e-3, 3.0e-3,
+  // 1.1e-3 (~ sqrt(f/k)); H spread / scale 1.83e-2, 1.40e-2, 1.28e-2, i.e. set by the resolution
+  // once the barrier is stiff (N = 200, k = 1e8: 4.3e-3). Bound: 2 x the largest measured spread; a
+  // wrong contact normal, force or Hessian breaks the balance of n.t and the curvature across the
+  // neck and moves H by O(1) there.
+  double previous_overlap = 1.0;
+  for (double k : {1e6, 1e7, 1e8}) {
+    const Racket r = racket(100, k);
+    rod::StaticOptions options;
+    options.load_steps = 8;
+    const auto result = rod::solve_static(r.model, r.start, options);
+    const auto pairs = rod::self_contacts(r.model.self_contact, result.state.position, rod::rest_edge_length(r.model));
+    ASSERT_FALSE(pairs.empty()) << k;
+    double overlap = 0.0, force = 0.0;
+    for (const auto& p : pairs) {
+      overlap = std::max(overlap, 2 * r.model.self_contact.radius - p.distance);
+      force = std::max(force, p.force);
+    }
+    EXPECT_LT(overlap, 0.5 * previous_overlap) << k;  // ~ sqrt(f/k): each decade of k at least halves it
+    previous_overlap = overlap;
+    const auto summary = rodvv::invariants::noether3d_summary(rod::make_solution(r.model, result.state));
+    EXPECT_LE(summary.spread, 2 * 1.83e-2 * summary.scale) << k;
+    std::cout << "[ summary  ] k " << k << ": " << pairs.size() << " pairs, largest overlap " << overlap
+              << ", largest pair force " << force << ", H spread / scale " << summary.spread / summary.scale
+              << ", iterations " << result.iterations << " in " << result.steps << " steps\n";
+  }
 }
 
 }  // namespace

@@ -15,6 +15,8 @@
 //
 // Residual r (DofLayout order): position and angle rows dE/dz + sum_j lambda_j dc_j/dz - Q(z), with
 // Q the generalised loads (gravity, tip force, tip moment) times the load factor; multiplier rows c_j.
+// E includes the self-contact barrier (not scaled by the load factor); its Hessian couples vertices
+// far apart along the rod, so with self-contact the Jacobian is sparse but not banded.
 // At an equilibrium r = 0 and lambda_j is the tension n.t of edge j.
 #include <cstddef>
 #include <vector>
@@ -33,8 +35,9 @@ struct EnergyParts {
   double stretching = 0.0; // 0 for an inextensible rod
   double gravity = 0.0;    // - sum m_i g.x_i
   double tip_force = 0.0;  // - F.x_N
+  double contact = 0.0;    // the self-contact barrier (self_contact.hpp), 0 without self-contact
   double elastic() const noexcept { return bending + twisting + stretching; }
-  double potential() const noexcept { return elastic() + gravity + tip_force; }
+  double potential() const noexcept { return elastic() + contact + gravity + tip_force; }
 };
 
 // The integrated strains (twist angle, kb.m1avg, kb.m2avg) at interior vertices 1 .. N-1 (entries 0

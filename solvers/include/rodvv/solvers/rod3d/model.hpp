@@ -46,6 +46,7 @@
 #include <vector>
 
 #include "rodvv/common/eigen_types.hpp"
+#include "rodvv/solvers/rod3d/self_contact.hpp"
 
 namespace rodvv::solvers::rod3d {
 
@@ -77,7 +78,10 @@ struct RodModel {
   EndCondition tip;              // s = L
   Vec3 end_force = Vec3::Zero();   // dead force at the tip vertex
   Vec3 end_moment = Vec3::Zero();  // dead moment on the tip edge
+  SelfContact self_contact;        // radius 0: none; else the barrier of self_contact.hpp (in the energy)
 };
+
+inline bool has_self_contact(const RodModel& model) { return model.self_contact.radius != 0.0; }
 
 void validate(const RodModel& model);
 
