@@ -8,6 +8,7 @@
 
 #include "rodvv/common/errors.hpp"
 #include "taylor2.hpp"
+#include "vertex_chart.hpp"
 
 // The bending-twisting energy of the discrete elastic rod (Bergou, Wardetzky, Robinson, Audoly &
 // Grinspun, "Discrete Elastic Rods", ACM TOG 27(3) 63, 2008; with the reference frame carried by
@@ -570,6 +571,18 @@ void stencil_derivatives_for_testing(const RodModel& model, const RodState& base
     hessian = h;
   else
     hessian.resize(0, 0);
+}
+
+void vertex_stencil_derivatives(const VertexChart& chart, const Eigen::Matrix<double, 11, 1>& dofs, const Vec3& stiffness,
+                                const Vec3& natural_integrated, double voronoi, Eigen::Matrix<double, 11, 1>& gradient,
+                                Eigen::Matrix<double, 11, 11>& hessian) {
+  const VertexStencil st{chart.t_prev, chart.a_prev, chart.t_next, chart.a_next, chart.reference_twist};
+  stencil_derivatives<2>(dofs, st, stiffness, natural_integrated, voronoi, gradient, &hessian);
+}
+
+Vec3 vertex_stencil_strains(const VertexChart& chart, const Eigen::Matrix<double, 11, 1>& dofs) {
+  const VertexStencil st{chart.t_prev, chart.a_prev, chart.t_next, chart.a_next, chart.reference_twist};
+  return stencil_strain_value(dofs, st);
 }
 
 }  // namespace detail

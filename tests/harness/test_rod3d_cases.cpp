@@ -159,3 +159,30 @@ TEST(Rod3dGatesHaveTeeth, SuperHelixBatheBolourchiSeesTheNodalRod) {
 }
 
 }  // namespace
+
+namespace {
+
+// rod3d/michell-ring: the second order claimed as fourth or first fails, and the ring compared with
+// Michell's threshold for B and C exchanged (2 pi sqrt(3) C/B, 2.6 x smaller) fails the bound.
+TEST(Rod3dGatesHaveTeeth, MichellOrderAndStiffnessRatioAreSeen) {
+  for (double claimed : {4.0, 1.0}) {
+    Case wrong = named("rod3d/michell-ring");
+    wrong.gates = {order_gate("critical_twist_relative", claimed, "wrong claim")};
+    EXPECT_FALSE(run_at_default_levels(wrong).passed()) << claimed;
+  }
+  Case swapped = named("rod3d/michell-ring");
+  const LevelRunner original = swapped.run_level;
+  swapped.run_level = [original](const Parameters& p, double level) {
+    LevelOutput out = original(p, level);
+    const double B = parameter_value(p, "B"), C = parameter_value(p, "C"), L = parameter_value(p, "L");
+    const double right = rodvv::references::michell_ring({B, C, L}).twist_angle;
+    const double wrong = rodvv::references::michell_ring({C, B, L}).twist_angle;
+    auto& sample = out.metrics.at("critical_twist_relative");
+    sample.computed *= right / wrong;
+    *sample.error = std::abs(sample.computed - 1.0);
+    return out;
+  };
+  EXPECT_FALSE(run_at_default_levels(swapped).passed());
+}
+
+}  // namespace

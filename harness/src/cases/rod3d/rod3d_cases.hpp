@@ -16,6 +16,7 @@ void add_energy_in_time(Registry& registry);      // energy of implicit Euler an
 void add_helical_buckling(Registry& registry);    // localized helical buckling (PyElastica's case)
 void add_bathe_bolourchi(Registry& registry);     // 45-degree bend, out-of-plane tip load
 void add_lateral_torsional(Registry& registry);   // lateral-torsional buckling of a cantilever
-void add_greenhill(Registry& registry);           // Greenhill twisted column (semi-tangential end torques)
+void add_greenhill(Registry& registry);           // Greenhill twisted column, clamped and pinned
+void add_michell_ring(Registry& registry);        // Michell twisted-ring instability (closed rod)
 
 }  // namespace rodvv::harness::rod3d_cases
