@@ -44,7 +44,15 @@ INSTANTIATE_TEST_SUITE_P(AllSuperHelixCases, SuperHelixCase,
                          });
 
 TEST(SuperHelixCatalogue, HasEveryCase) {
-  EXPECT_EQ(rodvv::testing::case_names_of_family("superhelix").size(), 11u);
+  EXPECT_EQ(rodvv::testing::case_names_of_family("superhelix").size(), 12u);
+}
+
+TEST(SuperHelixGatesHaveTeeth, LateralTorsionalSecondOrderClaimedAsFourthOrFirstFails) {
+  for (double claimed : {4.0, 1.0}) {
+    Case wrong = named("superhelix/lateral-torsional");
+    wrong.gates = {order_gate("critical_load_relative", claimed, "wrong claim")};
+    EXPECT_FALSE(run_at_default_levels(wrong).passed()) << claimed;
+  }
 }
 
 TEST(SuperHelixGatesHaveTeeth, SecondOrderClaimedAsFourthFails) {

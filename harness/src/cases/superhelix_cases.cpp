@@ -945,6 +945,7 @@ void register_superhelix_cases(Registry& registry) {
         run_accelerated_root));
   }
   superhelix_cases::add_bathe_bolourchi(registry);
+  superhelix_cases::add_lateral_torsional(registry);
 }
 
 }  // namespace rodvv::harness

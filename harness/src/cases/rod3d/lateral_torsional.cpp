@@ -80,7 +80,7 @@ void add_lateral_torsional(Registry& registry) {
        "Cantilever (tilted clamp) with EI_strong = EI_weak / r >> EI_weak and GJ, dead tip load at the centroid bending "
        "it about the stiff axis; P_cr where the stability eigenvalue crosses zero, at r = r0 and 2 r0, extrapolated to r = 0.",
        "P_cr = gamma sqrt(EI_weak GJ) / L^2, gamma = 2 j_{-1/4,1} = 4.0125993435789 (references/twisted_rod.hpp)",
-       "Michell 1899; Prandtl 1899; Timoshenko & Gere 1961; PRIOR_ART.md §4.5", kMethod},
+       "Michell 1899; Prandtl 1899; Timoshenko & Gere 1961; PRIOR_ART.md §4.5", kMethod, "rod-3d/lateral-torsional"},
       {make_parameter("L", 1.9, 0.0, 1e6, true, false, "length", "rod length"),
        make_parameter("EI_weak", 0.7, 0.0, 1e12, true, false, "force length^2", "weak-axis bending stiffness (about m1)"),
        make_parameter("GJ", 1.6, 0.0, 1e12, true, false, "force length^2", "torsional stiffness"),

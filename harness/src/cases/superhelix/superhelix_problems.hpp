@@ -8,6 +8,7 @@ namespace rodvv::harness::superhelix_cases {
 // The method description every Super-Helix case carries.
 extern const char* const kMethod;
 
-void add_bathe_bolourchi(Registry& registry);  // 45-degree bend, out-of-plane tip load
+void add_bathe_bolourchi(Registry& registry);    // 45-degree bend, out-of-plane tip load
+void add_lateral_torsional(Registry& registry);  // lateral-torsional buckling of a cantilever
 
 }  // namespace rodvv::harness::superhelix_cases
