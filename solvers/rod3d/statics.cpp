@@ -206,8 +206,19 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
     for (std::size_t k = 0; k < held.size(); ++k)
       if (held[k]) jacobian.coeffRef(Eigen::Index(k), Eigen::Index(k)) = 1.0;
     if (!factorize(jacobian)) return outcome;
-    const VecX dz = -solve(r);
+    VecX dz = -solve(r);
     if (!dz.allFinite()) return outcome;
+    if (contact) {
+      // No vertex moves more than h/2 in one step: two segments at least ~2h apart cannot pass through
+      // each other within a step, which the barrier (seen only at the end points of the step) could
+      // not prevent.
+      const DofLayout layout(model);
+      double largest = 0.0;
+      for (std::size_t i = 0; i <= model.elements; ++i)
+        largest = std::max(largest, dz.segment<3>(Eigen::Index(layout.vertex(i))).norm());
+      const double limit = 0.5 * model.self_contact.radius;
+      if (largest > limit) dz *= limit / largest;
+    }
     ++outcome.iterations;
     if (at_floor) {
       state = displaced(model, state, dz);
