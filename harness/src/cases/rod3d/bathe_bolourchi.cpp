@@ -29,8 +29,6 @@ namespace {
 namespace rod = solvers::rod3d;
 using namespace cases;
 constexpr double kPi = std::numbers::pi;
-constexpr double kPublishedAlongLoad = 53.5776450626987;                   // Kynema, converged
-constexpr double kPublishedInPlane = 27.338049;                          // |(-23.6459716009047, 13.7208006040058)|
 
 }  // namespace
 
@@ -67,17 +65,37 @@ BatheBolourchiTip nodal_bathe_bolourchi_tip(double R, double EI, double P, std::
   return {u.dot(load_direction), (u - u.dot(load_direction) * load_direction).norm()};
 }
 
+Parameters bathe_bolourchi_parameters() {
+  return {make_parameter("R", 100.0, 0.0, 1e6, true, false, "length", "arc radius"),
+          make_parameter("EI", 833333.3333333334, 0.0, 1e15, true, false, "force length^2", "EI1 = EI2 = GJ"),
+          make_parameter("P", 600.0, 0.0, 1e4, true, false, "force", "tip load normal to the plane")};
+}
+
+void add_bathe_bolourchi_metrics(LevelOutput& output, const BatheBolourchiTip& tip, const BatheBolourchiTip& finer) {
+  constexpr double kPublishedAlongLoad = 53.5776450626987;  // Kynema, converged
+  constexpr double kPublishedInPlane = 27.338049;           // |(-23.6459716009047, 13.7208006040058)|
+  output.metrics["tip_along_load_self"] = {tip.along_load, finer.along_load, std::abs(tip.along_load - finer.along_load)};
+  output.metrics["tip_in_plane_self"] = {tip.in_plane, finer.in_plane, std::abs(tip.in_plane - finer.in_plane)};
+  output.metrics["tip_along_load_vs_published"] = error_sample(finer.along_load, kPublishedAlongLoad);
+  output.metrics["tip_in_plane_vs_published"] = error_sample(finer.in_plane, kPublishedInPlane);
+}
+
+std::vector<MetricSpec> bathe_bolourchi_metric_specs() {
+  return {error_metric("tip_along_load_self", "length", "|u.load(N) - u.load(2N)| (self-convergence)", 2.0),
+          error_metric("tip_in_plane_self", "length", "| |u_plane(N)| - |u_plane(2N)| | (self-convergence)", 2.0),
+          error_metric("tip_along_load_vs_published", "length", "u.load at 2N vs Kynema's converged 53.5776 (reported)",
+                       std::nullopt),
+          error_metric("tip_in_plane_vs_published", "length", "|u_plane| at 2N vs Kynema's converged 27.3380 (reported)",
+                       std::nullopt)};
+}
+
 namespace {
 
 LevelOutput run(const Parameters& p, double level) {
   const std::size_t n = element_count(level);
   const double R = parameter_value(p, "R"), EI = parameter_value(p, "EI"), P = parameter_value(p, "P");
-  const BatheBolourchiTip tip = nodal_bathe_bolourchi_tip(R, EI, P, n), finer = nodal_bathe_bolourchi_tip(R, EI, P, 2 * n);
   LevelOutput output;
-  output.metrics["tip_along_load_self"] = {tip.along_load, finer.along_load, std::abs(tip.along_load - finer.along_load)};
-  output.metrics["tip_in_plane_self"] = {tip.in_plane, finer.in_plane, std::abs(tip.in_plane - finer.in_plane)};
-  output.metrics["tip_along_load_vs_published"] = error_sample(finer.along_load, kPublishedAlongLoad);
-  output.metrics["tip_in_plane_vs_published"] = error_sample(finer.in_plane, kPublishedInPlane);
+  add_bathe_bolourchi_metrics(output, nodal_bathe_bolourchi_tip(R, EI, P, n), nodal_bathe_bolourchi_tip(R, EI, P, 2 * n));
   return output;
 }
 
@@ -90,11 +108,6 @@ void add_bathe_bolourchi(Registry& registry) {
                               order_gate("tip_in_plane_self", 2.0, self_why),
                               measured_bound("tip_along_load_self", 3.1016e-2, h, 2.0),
                               measured_bound("tip_in_plane_self", 1.7034e-2, h, 2.0)};
-  std::vector<MetricSpec> metrics{
-      error_metric("tip_along_load_self", "length", "|u.load(N) - u.load(2N)| (self-convergence)", 2.0),
-      error_metric("tip_in_plane_self", "length", "| |u_plane(N)| - |u_plane(2N)| | (self-convergence)", 2.0),
-      error_metric("tip_along_load_vs_published", "length", "u.load at 2N vs Kynema's converged 53.5776 (reported)", std::nullopt),
-      error_metric("tip_in_plane_vs_published", "length", "|u_plane| at 2N vs Kynema's converged 27.3380 (reported)", std::nullopt)};
   registry.add(make_case(
       "rod3d",
       {"rod3d/bathe-bolourchi", "Bathe-Bolourchi 45-degree bend under an out-of-plane tip load",
@@ -103,11 +116,9 @@ void add_bathe_bolourchi(Registry& registry) {
        "Self-convergence |u(N) - u(2N)|; the converged geometrically exact beam of Kynema (with shear) reported beside it",
        "Bathe & Bolourchi 1979; Simo & Vu-Quoc 1986; PRIOR_ART.md §4.2 (Kynema's converged value)", kMethod,
        "rod-3d/bathe-bolourchi"},
-      {make_parameter("R", 100.0, 0.0, 1e6, true, false, "length", "arc radius"),
-       make_parameter("EI", 833333.3333333334, 0.0, 1e15, true, false, "force length^2", "EI1 = EI2 = GJ"),
-       make_parameter("P", 600.0, 0.0, 1e4, true, false, "force", "tip load normal to the plane")},
+      bathe_bolourchi_parameters(),
       element_levels("number of edges (the level also solves 2N)", {8, 16, 32}, {8, 16, 32, 64}),
-      std::move(metrics), std::move(gates), run));
+      bathe_bolourchi_metric_specs(), std::move(gates), run));
 }
 
 }  // namespace rodvv::harness::rod3d_cases
