@@ -80,10 +80,45 @@ void write_outputs(const reports::ValidationReport& report, const std::optional<
   }
 }
 
+// A case in which no gate was evaluated (all of them skipped, e.g. measured bounds at user
+// parameters) has shown nothing: it is not a pass. Said on stderr, exit 1.
 int exit_code(const std::vector<SweepResult>& results) {
+  std::vector<std::string> without_evidence;
+  for (const auto& result : results)
+    if (result.gates.empty()) without_evidence.push_back(result.info.name);
+  for (const auto& name : without_evidence)
+    fmt::print(stderr, "rodvv: no evidence: no gate of '{}' was evaluated at these parameters and levels; "
+                       "that is not a pass\n",
+               name);
+  if (!without_evidence.empty()) return kGateFailed;
   for (const auto& result : results)
     if (!result.passed()) return kGateFailed;
   return kPass;
+}
+
+// Output paths are checked before any case runs, not after minutes of work: not empty, not a
+// directory, in a directory that exists; and the JSON and CSV files are not the same file.
+void check_output_path(const char* option, const std::optional<std::string>& path) {
+  if (!path) return;
+  if (path->empty()) throw InputError(option, fmt::format("invalid {} '': an output file path is required", option));
+  const std::filesystem::path p(*path);
+  std::error_code error;
+  if (std::filesystem::is_directory(p, error))
+    throw InputError(option, fmt::format("invalid {} '{}': is a directory, not a file", option, *path));
+  const auto parent = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
+  if (!std::filesystem::is_directory(parent, error))
+    throw InputError(option, fmt::format("invalid {} '{}': directory '{}' does not exist", option, *path,
+                                         parent.string()));
+}
+void check_outputs(const std::optional<std::string>& json_path, const std::optional<std::string>& csv_path) {
+  check_output_path("--json", json_path);
+  check_output_path("--csv", csv_path);
+  std::error_code error;
+  if (json_path && csv_path &&
+      std::filesystem::weakly_canonical(*json_path, error) == std::filesystem::weakly_canonical(*csv_path, error))
+    throw InputError("--csv", fmt::format("invalid --csv '{}': the same file as --json (the CSV would overwrite "
+                                          "the JSON)",
+                                          *csv_path));
 }
 
 }  // namespace
@@ -107,6 +142,7 @@ int list_command(const std::vector<std::string>& patterns, bool verbose) {
 }
 
 int run_command(const RunOptions& options) {
+  check_outputs(options.json_path, options.csv_path);
   const auto cases = harness::default_registry().select(options.common.cases);
   auto results = run_cases(cases, options.common, nullptr);
   fmt::print("{}", render_gate_table(results));
@@ -121,6 +157,7 @@ int sweep_command(const SweepOptions& options) {
     throw InputError("case", fmt::format("unknown case '{}': `rodvv sweep` takes one exact case name "
                                          "(`rodvv list` shows them)",
                                          options.common.cases.front()));
+  check_outputs(options.json_path, options.csv_path);
   auto results = run_cases({c}, options.common, &options.levels);
   fmt::print("{}\n{}", render_level_table(results.front()), render_gate_table(results));
   const int code = exit_code(results);
@@ -131,6 +168,10 @@ int sweep_command(const SweepOptions& options) {
 int report_command(const ReportOptions& options) {
   reports::ValidationReport report;
   if (options.from_dir) {
+    if (!options.common.assignments.empty() || !options.common.cases.empty() || options.common.extended)
+      throw InputError("--from", "invalid --from with --set, --extended or case names: `report --from` merges results "
+                                 "already computed, so those options would have no effect; run the cases with "
+                                 "`rodvv run --json` instead");
     std::error_code ignored;
     if (std::filesystem::weakly_canonical(*options.from_dir, ignored) ==
         std::filesystem::weakly_canonical(options.out_dir, ignored))

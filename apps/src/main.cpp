@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include "commands.hpp"
 #include "rodvv/common/errors.hpp"
@@ -57,6 +58,12 @@ int main(int argc, char** argv) {
   sweep->add_option("--levels", sweep_options.levels,
                     "levels coarse to fine, comma separated (dt or tol decreasing, N increasing)")
       ->delimiter(',')
+      ->check(CLI::Validator(
+          [](std::string& level) {
+            return level.empty() ? std::string("an empty level (levels are numbers, comma separated, e.g. 16,32,64)")
+                                 : std::string();
+          },
+          "LEVEL"))
       ->required();
   sweep->add_option("--json", sweep_options.json_path, "also write the results as JSON");
   sweep->add_option("--csv", sweep_options.csv_path, "also write the results as CSV");
@@ -72,6 +79,14 @@ int main(int argc, char** argv) {
                      "merge the JSON files in this directory (from `rodvv run --json`) instead of running");
   report->add_flag("!--no-plots", report_options.plots, "skip the matplotlib plots");
 
+  // An unknown first word is named (CLI11 would only say that a subcommand is required).
+  if (argc >= 2 && argv[1][0] != '-') {
+    const std::string word = argv[1];
+    if (word != "list" && word != "run" && word != "sweep" && word != "report") {
+      fmt::print(stderr, "rodvv: error: unknown command '{}': expected list, run, sweep or report (rodvv --help)\n", word);
+      return kBadInput;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -20,7 +20,8 @@ void ProgressReporter::case_finished(const harness::SweepResult& result) {
   for (const auto& gate : result.gates) passed += gate.passed ? 1 : 0;
   const int width = static_cast<int>(fmt::formatted_size("{}", case_count_));
   fmt::print(stderr, "[{:>{}}/{}] {:<48} {} ({}/{} gates, {} levels, {:.2f} s)\n", cases_done_, width,
-             case_count_, result.info.name, result.passed() ? "pass" : "FAIL", passed,
+             case_count_, result.info.name,
+             result.gates.empty() ? "NO EVIDENCE" : result.passed() ? "pass" : "FAIL", passed,
              result.gates.size(), result.levels.size(), result.wall_seconds);
   std::fflush(stderr);
 }

@@ -57,12 +57,21 @@ void apply_assignment(Parameters& parameters, std::string_view assignment) {
     throw InputError("--set", "malformed --set '" + std::string(assignment) +
                                   "': expected NAME=VALUE, e.g. theta0_deg=45");
   const std::string_view name = assignment.substr(0, equals);
-  const std::string_view text = assignment.substr(equals + 1);
+  const Parameter& parameter = parameters[index_of(parameters, name)];  // unknown names first, with the list
+  std::string_view text = assignment.substr(equals + 1);
+  // std::from_chars takes no '+' sign; a user writing +45 means 45.
+  const std::string_view digits = text.size() > 1 && text[0] == '+' && text[1] != '-' ? text.substr(1) : text;
   double value = 0.0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || error != std::errc() || end != text.data() + text.size())
-    throw InputError(std::string(name), "malformed value in --set '" + std::string(assignment) +
-                                            "': '" + std::string(text) + "' is not a number");
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (error == std::errc::result_out_of_range && end == digits.data() + digits.size())
+    throw InputError(std::string(name), "invalid value in --set '" + std::string(assignment) + "': '" +
+                                            std::string(text) + "' is out of the range of a double; '" +
+                                            parameter.name + "' must be a finite number in " +
+                                            describe_range(parameter));
+  if (digits.empty() || error != std::errc() || end != digits.data() + digits.size())
+    throw InputError(std::string(name), "malformed value in --set '" + std::string(assignment) + "': '" +
+                                            std::string(text) + "' is not a number; '" + parameter.name +
+                                            "' must be a finite number in " + describe_range(parameter));
   set_parameter(parameters, name, value);
 }
 

@@ -541,6 +541,9 @@ ValidationReport read_report_file(const std::filesystem::path& path) {
     document = json::parse(in);
   } catch (const json::parse_error& e) {
     throw InputError(kParameter, path.string() + ": not valid JSON: " + e.what());
+  } catch (const json::exception& e) {  // e.g. out_of_range 406: a number such as 1e400 overflows a double
+    throw InputError(kParameter, path.string() + ": not readable as results: " + e.what() +
+                                     " (every number must be a finite double)");
   }
   return report_from_json(document, path.string());
 }
