@@ -133,8 +133,8 @@ int list_command(const std::vector<std::string>& patterns, bool verbose) {
     for (double level : info.resolution.default_levels) levels += fmt::format(" {:g}", level);
     fmt::print("    resolution {}:{}\n", info.resolution.name, levels);
     for (const auto& parameter : info.parameters)
-      fmt::print("    --set {}={:g}  in {} {}\n", parameter.name, parameter.value,
-                 harness::describe_range(parameter), parameter.description);
+      fmt::print("    --set {}={:g}  {}; {}\n", parameter.name, parameter.value, harness::describe_allowed(parameter),
+                 parameter.description);
     for (const auto& gate : c->gates) fmt::print("    gate: {}\n", gate.name);
   }
   fmt::print(stderr, "{} cases\n", cases.size());

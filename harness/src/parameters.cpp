@@ -40,14 +40,37 @@ std::string describe_range(const Parameter& parameter) {
          format_value(parameter.max) + (parameter.max_open ? ")" : "]");
 }
 
+std::string describe_allowed(const Parameter& parameter) {
+  switch (parameter.kind) {
+    case ParameterKind::Integer: return "a whole number in " + describe_range(parameter);
+    case ParameterKind::Boolean: return "0 (off) or 1 (on)";
+    case ParameterKind::Real: break;
+  }
+  return "a finite number in " + describe_range(parameter);
+}
+
+Parameter integer_parameter(std::string name, double value, double min, double max, std::string description) {
+  Parameter p = make_parameter(std::move(name), value, min, max, false, false, "", std::move(description));
+  p.kind = ParameterKind::Integer;
+  return p;
+}
+
+Parameter switch_parameter(std::string name, bool value, std::string description) {
+  Parameter p = make_parameter(std::move(name), value ? 1.0 : 0.0, 0.0, 1.0, false, false, "", std::move(description));
+  p.kind = ParameterKind::Boolean;
+  return p;
+}
+
 void set_parameter(Parameters& parameters, std::string_view name, double value) {
   Parameter& parameter = parameters[index_of(parameters, name)];
   const bool above_min = parameter.min_open ? value > parameter.min : value >= parameter.min;
   const bool below_max = parameter.max_open ? value < parameter.max : value <= parameter.max;
-  if (!std::isfinite(value) || !above_min || !below_max)
-    throw InputError(parameter.name, "invalid parameter '" + parameter.name + "' = " +
-                                         format_value(value) + ": must be a finite number in " +
-                                         describe_range(parameter));
+  const bool whole = value == std::floor(value);
+  const bool of_kind = parameter.kind == ParameterKind::Real || (parameter.kind == ParameterKind::Integer && whole) ||
+                       (parameter.kind == ParameterKind::Boolean && (value == 0.0 || value == 1.0));
+  if (!std::isfinite(value) || !above_min || !below_max || !of_kind)
+    throw InputError(parameter.name, "invalid parameter '" + parameter.name + "' = " + format_value(value) +
+                                         ": must be " + describe_allowed(parameter));
   parameter.value = value;
 }
 
@@ -66,12 +89,11 @@ void apply_assignment(Parameters& parameters, std::string_view assignment) {
   if (error == std::errc::result_out_of_range && end == digits.data() + digits.size())
     throw InputError(std::string(name), "invalid value in --set '" + std::string(assignment) + "': '" +
                                             std::string(text) + "' is out of the range of a double; '" +
-                                            parameter.name + "' must be a finite number in " +
-                                            describe_range(parameter));
+                                            parameter.name + "' must be " + describe_allowed(parameter));
   if (digits.empty() || error != std::errc() || end != digits.data() + digits.size())
     throw InputError(std::string(name), "malformed value in --set '" + std::string(assignment) + "': '" +
                                             std::string(text) + "' is not a number; '" + parameter.name +
-                                            "' must be a finite number in " + describe_range(parameter));
+                                            "' must be " + describe_allowed(parameter));
   set_parameter(parameters, name, value);
 }
 

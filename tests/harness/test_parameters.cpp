@@ -50,3 +50,34 @@ TEST(Parameters, RejectsMalformedAssignments) {
 }
 
 }  // namespace
+
+namespace {
+
+// Whole-number and on/off parameters take only values of their form (issue: hardening, class 2):
+// nothing is rounded silently, and the message says what is allowed.
+TEST(Parameters, CountsAndSwitchesRefuseOtherValues) {
+  using namespace rodvv::harness;
+  Parameters p{integer_parameter("N", 8, 2, 64, "number of edges"), switch_parameter("projection", true, "on/off")};
+  apply_assignment(p, "N=16");
+  EXPECT_EQ(parameter_value(p, "N"), 16.0);
+  apply_assignment(p, "N=+32");
+  EXPECT_EQ(parameter_value(p, "N"), 32.0);
+  apply_assignment(p, "projection=0");
+  EXPECT_EQ(parameter_value(p, "projection"), 0.0);
+  const auto message_of = [&](const char* assignment) {
+    try {
+      apply_assignment(p, assignment);
+    } catch (const rodvv::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(message_of("N=8.4").find("must be a whole number in [2, 64]"), std::string::npos);
+  EXPECT_NE(message_of("N=65").find("must be a whole number in [2, 64]"), std::string::npos);
+  EXPECT_NE(message_of("projection=0.5").find("must be 0 (off) or 1 (on)"), std::string::npos);
+  EXPECT_NE(message_of("projection=1e400").find("out of the range of a double"), std::string::npos);
+  EXPECT_EQ(parameter_value(p, "N"), 32.0);  // refused values leave the parameter as it was
+  EXPECT_EQ(describe_allowed(p[0]), "a whole number in [2, 64]");
+}
+
+}  // namespace

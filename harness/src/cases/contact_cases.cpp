@@ -354,7 +354,7 @@ Case soft_case() {
       "H = -18.47467025139 (§4.1); H = 1/2 EI kappa^2 + n.t - V constant along s for every b";
   c.info.citation = "PHYSICS.md §4.2 (reconstruction of the seed slides' soft-wall example); §1.2";
   c.info.method = "arcs, N = 256, potential through the Potential hook; Newton on the KKT system";
-  c.info.parameters = {make_parameter("N", 256, 16, 4096, false, false, "", "number of elements")};
+  c.info.parameters = {integer_parameter("N", 256, 16, 4096, "number of elements")};
   c.info.resolution = {"b", "wall softness", ResolutionScale::StepSize, {1e-4, 1e-5, 1e-6, 1e-7},
                        {1e-4, 1e-5, 1e-6, 1e-7, 1e-8}};
   c.info.metrics = {error_metric("P_vs_hard", "force", "P - P_hard (-> 0 as b -> 0, about b^0.6)", std::nullopt),

@@ -65,12 +65,12 @@ Parameters material_parameters(double kappa = 1.0) {
 // Barrier cases: the position projection after the advection can be switched off (projection = 0)
 // to see the crossing the velocity-level constraint alone leaves.
 Parameter projection_parameter() {
-  return make_parameter("projection", 1.0, 0.0, 1.0, false, false, "",
-                        "1: move an edge pushed across a wall by the xi advection back onto it; 0: off");
+  return switch_parameter("projection", true,
+                          "1: move an edge pushed across a wall by the xi advection back onto it; 0: off");
 }
 bool projection_on(const Parameters& p) {
   for (const auto& parameter : p)
-    if (parameter.name == "projection") return parameter.value >= 0.5;
+    if (parameter.name == "projection") return parameter.value == 1.0;  // a switch: 0 or 1 (parameters.hpp)
   return true;
 }
 

@@ -889,7 +889,7 @@ void register_superhelix_cases(Registry& registry) {
         "E = T + U + V (T with the rotational kinetic energy) is conserved by the exact flow; the loss "
         "E(0) - E(t_end) is the error, O(h)",
         "ALGORITHMS.md §1.5-1.7; Bertails et al. 2006; Bertails 2009 (linear time); issue 11 (rotational inertia)",
-        {make_parameter("N", 8.0, 1.0, 256.0, false, false, "", "number of elements"),
+        {integer_parameter("N", 8.0, 1.0, 256.0, "number of elements"),
          make_parameter("g", 2.0, 0.0, 100.0, true, false, "length/time^2", "gravity"),
          make_parameter("t_end", 0.25, 0.0, 100.0, true, false, "time", "horizon"),
          make_parameter("J_scale", 1.0, 0.0, 1e3, false, false, "",

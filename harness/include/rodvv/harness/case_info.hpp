@@ -7,6 +7,10 @@
 namespace rodvv::harness {
 
 // A named scalar parameter of a case with its allowed range, settable with `--set NAME=VALUE`.
+// What values a parameter takes: any real in its range, a whole number in it (a count), or 0/1 (a
+// switch). --set refuses the others with the allowed form instead of rounding them silently.
+enum class ParameterKind { Real, Integer, Boolean };
+
 struct Parameter {
   std::string name;
   double value = 0.0;
@@ -16,6 +20,7 @@ struct Parameter {
   bool max_open = false;
   std::string unit;
   std::string description;
+  ParameterKind kind = ParameterKind::Real;
 };
 
 // The resolution parameter of a sweep. A StepSize level is the mesh size h itself (dt, a

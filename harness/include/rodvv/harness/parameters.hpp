@@ -25,5 +25,11 @@ void apply_assignment(Parameters& parameters, std::string_view assignment);
 
 // "(0, 180)", "[1, inf)": the allowed range in interval notation.
 std::string describe_range(const Parameter& parameter);
+// What --set accepts: "a finite number in (0, 180)", "a whole number in [2, 64]", "0 (off) or 1 (on)".
+std::string describe_allowed(const Parameter& parameter);
+
+// A whole-number parameter in [min, max] (a count), and an on/off switch (0 or 1).
+Parameter integer_parameter(std::string name, double value, double min, double max, std::string description);
+Parameter switch_parameter(std::string name, bool value, std::string description);
 
 }  // namespace rodvv::harness

@@ -165,7 +165,7 @@ void add_energy_in_time(Registry& registry) {
        "discrete elastic rod, implicit Euler and implicit midpoint (solvers/rod3d/dynamics.hpp): Newton on positions, "
        "angles and multipliers in the chart of the previous step, exact banded Jacobian, banded LU; reference frames "
        "carried by time-parallel transport"},
-      {make_parameter("N", 8.0, 2.0, 64.0, false, false, "", "number of edges"),
+      {integer_parameter("N", 8.0, 2.0, 64.0, "number of edges"),
        make_parameter("g", 3.0, 0.0, 100.0, true, false, "length/time^2", "gravity"),
        make_parameter("twist", 1.0, -3.0, 3.0, false, false, "rad", "initial twist phi of the tip edge"),
        make_parameter("t_end", 1.0, 0.0, 20.0, true, false, "time", "horizon")},
