@@ -2,6 +2,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <new>
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
@@ -69,14 +71,33 @@ std::span<const double> sweep_levels(const Case& c, bool extended) {
   return c.info.resolution.default_levels;
 }
 
+double finest_level_honoured(const Resolution& resolution) {
+  if (resolution.finest_honoured > 0.0) return resolution.finest_honoured;
+  double finest_h = std::numeric_limits<double>::infinity();
+  for (const auto* levels : {&resolution.default_levels, &resolution.extended_levels})
+    for (double level : *levels) finest_h = std::min(finest_h, resolution.h(level));
+  if (!std::isfinite(finest_h)) return resolution.scale == ResolutionScale::Count ? 1e9 : 0.0;
+  return resolution.scale == ResolutionScale::Count ? 4.0 / finest_h : finest_h / 4.0;
+}
+
 void validate_levels(const Case& c, std::span<const double> levels) {
   const Resolution& resolution = c.info.resolution;
   if (levels.empty()) throw InputError("levels", "case '" + c.info.name + "': no levels given");
+  const double finest = finest_level_honoured(resolution);
+  const bool count = resolution.scale == ResolutionScale::Count;
   for (double level : levels) {
     require_positive(resolution.name, level);
-    if (resolution.scale == ResolutionScale::Count && level != std::floor(level))
+    if (count && level != std::floor(level))
       throw InputError(resolution.name, "invalid level " + resolution.name + " = " +
                                             format_value(level) + ": must be a whole number >= 1");
+    if (count ? level > finest : level < finest)
+      throw InputError(resolution.name,
+                       "invalid level " + resolution.name + " = " + format_value(level) + ": case '" + c.info.name +
+                           "' honours " + resolution.name + (count ? " <= " : " >= ") + format_value(finest) +
+                           " on this machine class (" +
+                           (resolution.finest_honoured > 0.0 ? "declared by the case"
+                                                             : "four times finer than its finest extended level") +
+                           "); finer levels would exhaust time or memory");
   }
   for (std::size_t i = 1; i < levels.size(); ++i)
     if (!(resolution.h(levels[i]) < resolution.h(levels[i - 1])))
@@ -114,6 +135,9 @@ SweepResult run_sweep(const Case& c, const Parameters& parameters, std::span<con
       level.series = std::move(output.series);
     } catch (const SolverError& error) {
       level.failure = error.what();
+    } catch (const std::bad_alloc&) {
+      level.failure = "out of memory at " + c.info.resolution.name + " = " + format_value(levels[i]) +
+                      " (std::bad_alloc)";
     }
     level.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (progress)

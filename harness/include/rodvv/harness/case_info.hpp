@@ -33,6 +33,10 @@ struct Resolution {
   ResolutionScale scale = ResolutionScale::StepSize;
   std::vector<double> default_levels;   // coarse -> fine; sized so `rodvv run` stays fast
   std::vector<double> extended_levels;  // a larger sweep behind `--extended`
+  // The finest level the case honours on this machine class (2 cores, a few GB): the largest N, or
+  // the smallest step. 0: four times finer than its finest default or extended level (sweep.hpp:
+  // finest_level_honoured). A level beyond it is refused as bad input, before any work.
+  double finest_honoured = 0.0;
 
   double h(double level) const { return scale == ResolutionScale::StepSize ? level : 1.0 / level; }
 };

@@ -22,11 +22,18 @@ struct SweepProgress {
 using ProgressCallback = std::function<void(const SweepProgress&)>;
 
 // Checks that levels are finite, positive, integral for count resolutions, strictly refining
-// (h decreasing) and at least fit_levels many when the case gates an order. Throws InputError.
+// (h decreasing), no finer than the case honours (finest_level_honoured) and at least fit_levels
+// many when the case gates an order. Throws InputError.
 void validate_levels(const Case& c, std::span<const double> levels);
 
+// The finest level a case honours: resolution.finest_honoured if set, else four times finer (in h)
+// than its finest default or extended level - a sweep one or two refinements past what the case
+// was measured on, not the 1e6 elements that end in a bad_alloc or a run of hours.
+double finest_level_honoured(const Resolution& resolution);
+
 // Runs the sweep. InputError from parameters or levels propagates (nothing is run); a SolverError
-// at a level is recorded as that level's failure and the sweep goes on.
+// at a level is recorded as that level's failure and the sweep goes on, and so is running out of
+// memory (std::bad_alloc), named as such: never an internal error.
 SweepResult run_sweep(const Case& c, const Parameters& parameters, std::span<const double> levels,
                       const ProgressCallback& progress = {});
 

@@ -65,7 +65,7 @@ void add_michell_ring(Registry& registry) {
       error_metric("critical_twist_relative", "", "|Phi_c / (2 pi sqrt(3) B/C) - 1|", 2.0),
       diagnostic_metric("critical_turns", "Phi_c / 2 pi (Michell: sqrt(3) B/C turns)"),
       diagnostic_metric("equilibrium_residual", "force imbalance of the twisted polygon / its scale (round-off)")};
-  registry.add(make_case(
+  Case c = make_case(
       "rod3d",
       {"rod3d/michell-ring", "Michell's twisted ring: critical twist from the stability eigenvalue",
        "Closed inextensible ring (tilted plane), isotropic bending B, twist C, total twist Phi; Phi_c where the "
@@ -76,7 +76,9 @@ void add_michell_ring(Registry& registry) {
        make_parameter("B", 1.3, 0.0, 1e12, true, false, "force length^2", "bending stiffness (EI1 = EI2)"),
        make_parameter("C", 0.8, 0.0, 1e12, true, false, "force length^2", "twisting stiffness GJ")},
       element_levels("number of edges", {24, 48, 96}, {24, 48, 96, 192}), std::move(metrics), std::move(gates),
-      run));
+      run);
+  c.info.resolution.finest_honoured = double(rod::kMaxRingElements);  // the dense linearisation's limit
+  registry.add(std::move(c));
 }
 
 }  // namespace rodvv::harness::rod3d_cases
