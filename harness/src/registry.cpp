@@ -62,6 +62,7 @@ const Registry& default_registry() {
     register_contact_cases(r);
     register_sleeve_cases(r);
     register_rod3d_cases(r);
+    register_knot_cases(r);
     return r;
   }();
   return registry;

@@ -43,6 +43,18 @@ SpatialRodSolution make_solution(const RodModel& model, const RodState& state) {
     stretch[j] = (state.position[j + 1] - state.position[j]).norm() / ell;
   }
 
+  // The self-contact field felt along each segment, per unit length (PHYSICS.md §1.2: V_eff(s) =
+  // int U(|r(s) - r(sigma)|) dsigma, the full field, not half of it): each pair's barrier energy is
+  // felt in full by both of its segments.
+  std::vector<double> contact_field(n, 0.0);
+  if (has_self_contact(model))
+    for (const ContactPair& pair : self_contacts(model.self_contact, state.position, ell)) {
+      const double overlap = 2.0 * model.self_contact.radius - pair.distance;
+      const double energy = model.self_contact.stiffness / 3.0 * overlap * overlap * overlap;
+      contact_field[pair.first] += energy / ell;
+      contact_field[pair.second] += energy / ell;
+    }
+
   SpatialRodSolution solution;
   solution.method = "discrete elastic rod (Bergou et al. 2008)";
   solution.length = model.length;
@@ -61,7 +73,8 @@ SpatialRodSolution make_solution(const RodModel& model, const RodState& state) {
     solution.natural_strain.push_back(model.natural_strain);
     solution.force_n.push_back(0.5 * (edge_force[i - 1] + edge_force[i]));
     solution.moment_m.push_back(frame * model.stiffness.cwiseProduct(u - model.natural_strain));
-    solution.potential.push_back(-model.line_density * model.gravity.dot(state.position[i]));
+    solution.potential.push_back(-model.line_density * model.gravity.dot(state.position[i]) +
+                                 0.5 * (contact_field[i - 1] + contact_field[i]));
     solution.shear_energy.push_back(extensible ? 0.5 * model.extensional_stiffness * (v0 - 1.0) * (v0 - 1.0) : 0.0);
   }
   // Vertices on [0, L]: a clamped end contributes its support point (the clamped edge's midpoint,

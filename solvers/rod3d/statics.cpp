@@ -155,6 +155,30 @@ double round_off_floor(const RodModel& model, const RodState& state, double forc
   return floor;
 }
 
+// Pseudo-time bounds, in the units of add_pseudo_time: from 1e-6 (a step that fails at a pseudo-time
+// step a million times shorter than the slowest elastic relaxation is a failure) to 1e6 (the
+// regularisation of an exact zero mode, e.g. the turn of an isotropic rod about its tension axis,
+// then stays at 1e-6 of the global stiffness, so round-off cannot drive the iterate along it, while
+// the other modes converge at the rate 1e-6 times their stiffness ratio).
+constexpr double kMinPseudoTime = 1e-6;
+constexpr double kMaxPseudoTime = 1e6;
+
+// Adds D / tau to the free position and angle rows of the Jacobian: the "mass" of a gradient flow
+// whose unit pseudo-time relaxes a mode of the rod's global stiffness (force scale / L per unit
+// displacement, force scale x L per radian) by a factor e.
+void add_pseudo_time(const RodModel& model, const Scales& scales, const std::vector<char>& held, double inverse_tau,
+                     Eigen::SparseMatrix<double>& jacobian) {
+  const DofLayout layout(model);
+  for (std::size_t k = 0; k < layout.size(); ++k) {
+    if (held[k]) continue;
+    const std::size_t slot = k % layout.stride();
+    const bool position = k >= layout.size() - 3 || slot < 3;
+    if (!position && slot != 3) continue;  // multiplier rows: the constraints stay exact
+    const double mass = position ? scales.force / scales.length : scales.moment;
+    jacobian.coeffRef(Eigen::Index(k), Eigen::Index(k)) += mass * inverse_tau;
+  }
+}
+
 struct NewtonOutcome {
   bool converged = false;
   std::size_t iterations = 0;
@@ -188,6 +212,8 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
     for (std::size_t k = 0; k < held.size(); ++k)
       if (held[k]) v[Eigen::Index(k)] = 0.0;
   };
+  const bool pseudo_transient = options.pseudo_transient;
+  double pseudo_time = options.initial_pseudo_time;
   for (std::size_t it = 0; it < options.max_iterations; ++it) {
     static_system(model, state, lambda, r, jacobian);
     zero_held(r);
@@ -205,9 +231,11 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
     jacobian.prune([&](Eigen::Index row, Eigen::Index, double) { return !held[std::size_t(row)]; });
     for (std::size_t k = 0; k < held.size(); ++k)
       if (held[k]) jacobian.coeffRef(Eigen::Index(k), Eigen::Index(k)) = 1.0;
+    if (pseudo_transient) add_pseudo_time(model, scales, held, 1.0 / pseudo_time, jacobian);
     if (!factorize(jacobian)) return outcome;
     VecX dz = -solve(r);
     if (!dz.allFinite()) return outcome;
+    bool capped = false;
     if (contact) {
       // No vertex moves more than h/2 in one step: two segments at least ~2h apart cannot pass through
       // each other within a step, which the barrier (seen only at the end points of the step) could
@@ -217,13 +245,40 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
       for (std::size_t i = 0; i <= model.elements; ++i)
         largest = std::max(largest, dz.segment<3>(Eigen::Index(layout.vertex(i))).norm());
       const double limit = 0.5 * model.self_contact.radius;
-      if (largest > limit) dz *= limit / largest;
+      capped = largest > limit;
+      if (capped) dz *= limit / largest;
     }
     ++outcome.iterations;
     if (at_floor) {
       state = displaced(model, state, dz);
       outcome.converged = true;
       return outcome;
+    }
+    if (pseudo_transient) {
+      // Pseudo-transient continuation (Kelley & Keyes 1998): the step is taken whole if it keeps the
+      // residual finite and the segments apart, and the pseudo-time step follows the residual
+      // (switched evolution relaxation, tau <- tau r_old / r_new, at most tenfold per step); a step
+      // that fails is retried with a quarter of the pseudo-time step.
+      double twist_change = 0.0;
+      RodState trial = displaced(model, state, dz, &twist_change);
+      double measure = std::numeric_limits<double>::infinity();
+      if (twist_change <= 0.25 * std::numbers::pi) {
+        try {
+          VecX r_trial = static_residual(model, trial, lambda);
+          zero_held(r_trial);
+          measure = scaled_measure(model, r_trial, residual_scales(model, trial, lambda), held);
+        } catch (const SolverError&) {
+        }
+      }
+      if (std::isfinite(measure) && measure <= 10.0 * outcome.residual) {
+        state = std::move(trial);
+        const double growth = capped ? 1.0 : measure < outcome.residual ? std::clamp(outcome.residual / measure, 1.2, 10.0) : 1.0;
+        pseudo_time = std::min(kMaxPseudoTime, pseudo_time * growth);
+      } else {
+        pseudo_time *= 0.25;
+        if (pseudo_time < kMinPseudoTime) return outcome;
+      }
+      continue;
     }
     // Backtracking on the scaled residual (Armijo 1e-4); a step may turn no reference twist by more
     // than pi/4 (the energy's chart, discrete_energy.cpp).
@@ -256,6 +311,7 @@ void validate_options(const StaticOptions& options) {
   require_at_least("load_steps", options.load_steps, 1);
   require_at_least("max_iterations", options.max_iterations, 1);
   require_open_interval("tolerance", options.tolerance, 0.0, 1.0);
+  require_closed_interval("initial_pseudo_time", options.initial_pseudo_time, kMinPseudoTime, kMaxPseudoTime);
 }
 
 }  // namespace

@@ -37,5 +37,6 @@ void register_buckling_cases(Registry& registry);  // elastica/euler-*: Euler lo
 void register_contact_cases(Registry& registry);  // elastica-contact/*: cavity, soft walls, prop
 void register_sleeve_cases(Registry& registry);  // sleeve/*: Eshelby-like force, elastica arm scale
 void register_rod3d_cases(Registry& registry);   // rod3d/*: the nodal 3-D rod (discrete elastic rod)
+void register_knot_cases(Registry& registry);    // knot/*: knots tied in rods with self-contact
 
 }  // namespace rodvv::harness

@@ -38,6 +38,12 @@ struct StaticOptions {
   std::size_t max_iterations = 60;   // per continuation step, >= 1
   double tolerance = 1e-10;          // relative, in (0, 1)
   std::size_t max_halvings = 16;     // of one continuation step
+  // Pseudo-transient continuation instead of the line search (statics.cpp): Newton on
+  // (D / tau) dz + r(z + dz) = 0 with the pseudo-time step tau growing as the residual falls, for a
+  // start far from equilibrium (a knot to be tied) or a rod with zero or near-zero modes (an
+  // isotropic rod turning about its tension axis, a knot sliding along its tails).
+  bool pseudo_transient = false;
+  double initial_pseudo_time = 1.0;  // tau of the first step, in [1e-6, 1e6]
 };
 
 struct StaticResult {

@@ -1,0 +1,8 @@
+// knot/*: knots tied in rods with self-contact. One file per problem in this folder; this one lists them.
+#include "knot_cases.hpp"
+
+namespace rodvv::harness {
+
+void register_knot_cases(Registry& registry) { knot_cases::add_trefoil_nodal(registry); }
+
+}  // namespace rodvv::harness

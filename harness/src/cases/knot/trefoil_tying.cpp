@@ -1,0 +1,107 @@
+#include "trefoil_tying.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
+
+namespace rodvv::harness::knot_cases {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr int kSamples = 400;  // per piece of the dense curve (chord error ~ (arc / 400)^2 curvature)
+
+// 0 -> 1 with zero slope at both ends.
+double ease(double u) { return 0.5 - 0.5 * std::cos(kPi * std::clamp(u, 0.0, 1.0)); }
+
+// The dense open curve, from the root tail's far end to the tip tail's far end (before the turn).
+std::vector<Vec3> dense_curve(const BraidClosure& k) {
+  const double r = k.strand_offset, a = k.braid_half_length, rho = k.loop_radius, g = k.tail_offset;
+  const double bottom = -r - 2.0 * rho;  // the lower arc's straight part
+  std::vector<Vec3> core;
+  // From the cut, leftwards along the lower arc, dropping from -g to the arc's plane.
+  for (int i = 0; i <= kSamples; ++i) {
+    const double u = double(i) / kSamples;
+    core.emplace_back(-a * u, bottom, -g * (1.0 - ease(2.0 * u - 1.0)));
+  }
+  // Up the left end of the lower arc into strand 2's start (x = -a, y = -r).
+  for (int i = 1; i <= kSamples; ++i) {
+    const double phi = -0.5 * kPi - kPi * double(i) / kSamples;
+    core.emplace_back(-a + rho * std::cos(phi), -r - rho + rho * std::sin(phi), 0.0);
+  }
+  const auto strand = [&](double phase) {
+    for (int i = 1; i <= kSamples; ++i) {
+      const double x = -a + 2.0 * a * double(i) / kSamples;
+      const double psi = phase + 0.5 * k.half_twists * kPi * (x + a) / a;
+      core.emplace_back(x, r * std::cos(psi), r * std::sin(psi));
+    }
+  };
+  // Strand 2 (starts below the axis), the upper arc (right end, straight back, left end), strand 1.
+  strand(kPi);
+  for (int i = 1; i <= kSamples; ++i) {
+    const double phi = -0.5 * kPi + kPi * double(i) / kSamples;
+    core.emplace_back(a + rho * std::cos(phi), r + rho + rho * std::sin(phi), 0.0);
+  }
+  for (int i = 1; i <= kSamples; ++i) core.emplace_back(a - 2.0 * a * double(i) / kSamples, r + 2.0 * rho, 0.0);
+  for (int i = 1; i <= kSamples; ++i) {
+    const double phi = 0.5 * kPi + kPi * double(i) / kSamples;
+    core.emplace_back(-a + rho * std::cos(phi), r + rho + rho * std::sin(phi), 0.0);
+  }
+  strand(0.0);
+  // The right end of the lower arc, then leftwards to the cut, rising to +g.
+  for (int i = 1; i <= kSamples; ++i) {
+    const double phi = 0.5 * kPi - kPi * double(i) / kSamples;
+    core.emplace_back(a + rho * std::cos(phi), -r - rho + rho * std::sin(phi), 0.0);
+  }
+  for (int i = 1; i <= kSamples; ++i) {
+    const double u = double(i) / kSamples;
+    core.emplace_back(a * (1.0 - u), bottom, g * ease(2.0 * u));
+  }
+  // The tails: the root's comes in from +x, the tip's leaves towards -x.
+  std::vector<Vec3> curve;
+  for (int i = 4 * kSamples; i >= 1; --i) curve.push_back(core.front() + Vec3(k.tail_length * i / (4.0 * kSamples), 0, 0));
+  curve.insert(curve.end(), core.begin(), core.end());
+  for (int i = 1; i <= 4 * kSamples; ++i) curve.push_back(core.back() - Vec3(k.tail_length * i / (4.0 * kSamples), 0, 0));
+  for (Vec3& p : curve) p = Vec3(-p.x(), -p.y(), p.z());  // turned by pi about z: the root at -x
+  return curve;
+}
+
+}  // namespace
+
+TiedRod tie_braid_closure(const BraidClosure& knot, std::size_t elements) {
+  if (knot.half_twists < 1 || knot.half_twists % 2 == 0)
+    throw InputError("half_twists", "invalid parameter 'half_twists': must be odd and >= 1 (got " +
+                                        std::to_string(knot.half_twists) + ")");
+  require_positive("strand_offset", knot.strand_offset);
+  require_positive("braid_half_length", knot.braid_half_length);
+  require_positive("loop_radius", knot.loop_radius);
+  require_positive("tail_offset", knot.tail_offset);
+  require_positive("tail_length", knot.tail_length);
+  require_at_least("elements", elements, 3);
+
+  const std::vector<Vec3> curve = dense_curve(knot);
+  std::vector<double> arclength(curve.size(), 0.0);
+  for (std::size_t i = 1; i < curve.size(); ++i) arclength[i] = arclength[i - 1] + (curve[i] - curve[i - 1]).norm();
+  TiedRod rod;
+  rod.length = arclength.back();
+  const double ebar = rod.length / (double(elements) - 0.5);
+  const Vec3 root_direction = (curve[1] - curve[0]).normalized();
+  std::size_t j = 0;
+  for (std::size_t i = 0; i <= elements; ++i) {
+    const double s = (double(i) - 0.5) * ebar;
+    if (s <= 0.0) {  // the ghost vertex, on the root tail's line
+      rod.vertices.push_back(curve.front() + s * root_direction);
+      continue;
+    }
+    while (j + 2 < curve.size() && arclength[j + 1] < s) ++j;
+    const double u = std::min(1.0, (s - arclength[j]) / (arclength[j + 1] - arclength[j]));
+    rod.vertices.push_back(curve[j] + u * (curve[j + 1] - curve[j]));
+  }
+  return rod;
+}
+
+}  // namespace rodvv::harness::knot_cases

@@ -1,0 +1,41 @@
+#pragma once
+// How rodvv ties an open trefoil (overhand) knot in a rod before relaxing it (knot/trefoil-nodal).
+//
+// The trefoil is the closure of the two-strand braid sigma_1^3. The strands wind about the x-axis
+// at distance `strand_offset` through `half_twists` half turns over |x| <= braid_half_length; two
+// stadium-shaped arcs of radius `loop_radius` in the plane z = 0 close them, one above (y > 0) and
+// one below. The lower arc is cut at its middle and its two cut ends are drawn out into straight
+// tails of length `tail_length`, one each way along x, passing each other `tail_offset` above and
+// below the arc's plane (a crossing of the two tails alone, which a closing arc at infinity would
+// undo by a Reidemeister I move, so the knot type is the braid closure's: a trefoil for 3 half
+// twists, the unknot for 1). The curve is then turned by pi about z so that it starts at -x.
+//
+// The rod's vertices are placed on this curve at equal arclength steps ebar = L / (N - 1/2) for a
+// clamped root (vertex i at arclength (i - 1/2) ebar, the ghost vertex on the straight root tail;
+// solvers/rod3d/model.hpp), L the curve's length; the edges are chords, a little shorter than ebar
+// where the curve bends, which the first Newton steps of the statics correct.
+#include <cstddef>
+#include <vector>
+
+#include "rodvv/common/eigen_types.hpp"
+
+namespace rodvv::harness::knot_cases {
+
+struct BraidClosure {
+  int half_twists = 3;             // odd: one component (3: trefoil, 1: unknot)
+  double strand_offset = 0.0;      // distance of each strand from the braid axis
+  double braid_half_length = 0.0;  // the braid spans |x| <= this
+  double loop_radius = 0.0;        // radius of the closing arcs' ends
+  double tail_offset = 0.0;        // the tails pass this far above and below the arcs' plane
+  double tail_length = 0.0;        // each tail's length
+};
+
+struct TiedRod {
+  double length = 0.0;          // L, the arclength of the whole curve
+  std::vector<Vec3> vertices;   // N + 1 vertices, the root's ghost vertex first
+};
+
+// InputError unless every length is finite and > 0 and half_twists is odd and >= 1, elements >= 3.
+TiedRod tie_braid_closure(const BraidClosure& knot, std::size_t elements);
+
+}  // namespace rodvv::harness::knot_cases
