@@ -196,6 +196,42 @@ TEST(Rod3dStatics, MattiassonCantileverConvergesAtSecondOrder) {
   EXPECT_LT(finer.w, 1e-3);
 }
 
+// Pseudo-transient continuation reaches the same equilibrium as the Newton line search, in one
+// load step from the straight rod (the line search needs four): the regularisation D / tau only
+// changes the path, and the last steps, at tau = 1e6, are Newton steps to the tolerance.
+TEST(Rod3dStatics, PseudoTransientContinuationFindsTheSameEquilibrium) {
+  rod::RodModel model;
+  model.elements = 32;
+  model.length = 1.3;
+  model.stiffness = Vec3(0.8, 1.7, 4.4);
+  model.root.support = rod::EndSupport::Clamped;
+  model.root.frame = tilted_frame(0.7);
+  model.end_force = 2.0 * model.stiffness[1] / (model.length * model.length) * model.root.frame.col(2);
+  rod::StaticOptions newton;
+  newton.load_steps = 4;
+  newton.tolerance = 1e-12;
+  rod::StaticOptions relaxed = newton;
+  relaxed.load_steps = 1;
+  relaxed.pseudo_transient = true;
+  relaxed.max_iterations = 500;
+  const auto a = rod::solve_static(model, rod::make_straight_state(model), newton);
+  const auto b = rod::solve_static(model, rod::make_straight_state(model), relaxed);
+  double largest = 0.0;
+  for (std::size_t i = 0; i <= model.elements; ++i)
+    largest = std::max(largest, (a.state.position[i] - b.state.position[i]).norm());
+  // Both at residual 1e-12 of the force scale EI/L^2 on a rod whose softest stiffness is ~EI/L^3:
+  // positions agree to ~1e-12 L; 1e-9 L leaves room for the conditioning of the bent cantilever.
+  EXPECT_LE(largest, 1e-9 * model.length);
+  rod::StaticOptions bad = relaxed;
+  bad.initial_pseudo_time = 0.0;
+  try {
+    rod::solve_static(model, rod::make_straight_state(model), bad);
+    FAIL();
+  } catch (const rodvv::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("initial_pseudo_time"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Rod3dStatics, StraightRodUnderTensionStretchesByFOverEA) {
   rod::RodModel model;
   model.elements = 8;
