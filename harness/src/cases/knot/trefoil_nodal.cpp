@@ -98,12 +98,45 @@ LevelOutput run(const Parameters& p, double level) {
   double deepest = 0.0;
   for (const auto& c : contacts) deepest = std::max(deepest, 1.0 - c.distance / (2.0 * h));
 
+  // The loose-knot relations (PHYSICS.md §5.1): at the stations where the tangent turns through
+  // perpendicular to the pull (t.e_x changes sign; kappa interpolated linearly in t.e_x), and at the
+  // apex of the loop, the station between the first and the last of them whose tangent points most
+  // against the pull.
+  std::vector<double> tx, kappa;
+  for (std::size_t i = 0; i < solution.s.size(); ++i) {
+    tx.push_back(solution.frame[i].col(0).x());
+    kappa.push_back(std::hypot(solution.strain_u[i][1], solution.strain_u[i][2]));
+  }
+  std::vector<std::size_t> turns;  // i: t.e_x changes sign between stations i and i + 1
+  double perpendicular_sum = 0.0;
+  for (std::size_t i = 0; i + 1 < tx.size(); ++i)
+    if ((tx[i] > 0) != (tx[i + 1] > 0)) {
+      const double u = tx[i] / (tx[i] - tx[i + 1]);
+      const double kappa_b = kappa[i] + u * (kappa[i + 1] - kappa[i]);
+      perpendicular_sum += 0.5 * k.B * kappa_b * kappa_b / k.T;
+      turns.push_back(i);
+    }
+  double apex_ratio = std::nan("");
+  if (turns.size() >= 2) {
+    std::size_t apex = turns.front() + 1;
+    for (std::size_t i = turns.front() + 1; i <= turns.back(); ++i)
+      if (tx[i] < tx[apex]) apex = i;
+    apex_ratio = k.B * kappa[apex] * kappa[apex] / (4.0 * k.T);
+  }
+  // End shortening: the rod's length less the distance its ends span along the pull (root: the
+  // support point, s = 0), against the loose loop's 4 lambda.
+  const double span = (result.state.position[n] - model.root.position).x();
+
   LevelOutput output;
   output.metrics["H_deviation"] = value_sample(deviation);
+  output.metrics["perpendicular_ratio"] =
+      diagnostic(turns.empty() ? std::nan("") : perpendicular_sum / double(turns.size()));
+  output.metrics["perpendicular_points"] = diagnostic(double(turns.size()));
+  output.metrics["apex_ratio"] = diagnostic(apex_ratio);
+  output.metrics["shortening_ratio"] = diagnostic((model.length - span) / (4.0 * k.lambda()));
   add_noether3d_metrics(output, solution, k.T);
   output.metrics["contact_pairs"] = diagnostic(double(contacts.size()));
   output.metrics["deepest_overlap"] = diagnostic(deepest);
-  output.metrics["tail_length_pulled_in"] = diagnostic((result.state.position[n] - result.state.position[0]).x() / tied.length);
   output.metrics["iterations"] = diagnostic(double(result.iterations));
   output.metrics["equilibrium_residual"] = diagnostic(result.residual);
   return output;
@@ -116,9 +149,13 @@ void add_trefoil_nodal(Registry& registry) {
   std::vector<MetricSpec> metrics{
       invariant_metric("H_deviation", "max_s |H(s) - T| / T through the knot, V_eff of the barrier included", 1.0)};
   for (auto& spec : noether3d_metric_specs(true, std::nullopt)) metrics.push_back(std::move(spec));
+  metrics.push_back(diagnostic_metric("perpendicular_ratio",
+                                      "mean of 1/2 B kappa^2 / T where t is perpendicular to the pull (loose limit: 1)"));
+  metrics.push_back(diagnostic_metric("perpendicular_points", "where t.e_x changes sign (the loose loop: 2)"));
+  metrics.push_back(diagnostic_metric("apex_ratio", "B kappa_apex^2 / (4 T) at the apex (loose limit: 1)"));
+  metrics.push_back(diagnostic_metric("shortening_ratio", "(L - end span along the pull) / (4 sqrt(B/T)) (loose limit: 1)"));
   metrics.push_back(diagnostic_metric("contact_pairs", "segment pairs closer than 2h at equilibrium"));
   metrics.push_back(diagnostic_metric("deepest_overlap", "largest (2h - d) / 2h over the contacts"));
-  metrics.push_back(diagnostic_metric("tail_length_pulled_in", "end-to-end distance / L"));
   metrics.push_back(diagnostic_metric("iterations", "Newton iterations of the pseudo-transient relaxation"));
   metrics.push_back(diagnostic_metric("equilibrium_residual", "final scaled residual"));
   std::vector<GateSpec> gates{
