@@ -7,6 +7,8 @@
 //    localized helical buckling: Newton from the infinite-rod guess, then the metrics) at N = 100
 //    (envelope error 0.79, PyElastica reaches 0.72 at 100 elements in about 8 minutes of explicit
 //    stepping), 400 (0.092) and 1600 (0.0054).
+//  - BM_TrefoilKnot: the whole knot/trefoil-nodal level (tying, pseudo-transient relaxation with
+//    self-contact, metrics) at N = 100, 200, 400 (issue 12 target at N = 400: under 2 s).
 // The exponent is the least-squares slope of log(cpu time) against log N of the BM_NewtonIteration rows.
 #include <benchmark/benchmark.h>
 
@@ -83,6 +85,12 @@ void BM_HelicalBuckling(benchmark::State& bench) {
   for (auto _ : bench) benchmark::DoNotOptimize(c->run_level(c->info.parameters, double(bench.range(0))));
 }
 BENCHMARK(BM_HelicalBuckling)->Arg(100)->Arg(400)->Arg(1600)->Unit(benchmark::kMillisecond);
+
+void BM_TrefoilKnot(benchmark::State& bench) {
+  const auto* c = rodvv::harness::default_registry().find("knot/trefoil-nodal");
+  for (auto _ : bench) benchmark::DoNotOptimize(c->run_level(c->info.parameters, double(bench.range(0))));
+}
+BENCHMARK(BM_TrefoilKnot)->Arg(100)->Arg(200)->Arg(400)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -201,10 +201,23 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
   elastica2d::BandedLU banded;
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> sparse;
   const bool contact = has_self_contact(model);
+  // The symbolic analysis (COLAMD ordering, elimination tree) is redone only when the sparsity
+  // pattern changes - when a contact pair appears or goes - not at every iteration.
+  std::vector<int> pattern_outer, pattern_inner;
   const auto factorize = [&](Eigen::SparseMatrix<double>& a) {
     if (!contact) return banded.factorize(a);
     a.makeCompressed();
-    sparse.compute(a);
+    const Eigen::Index columns = a.cols(), entries = a.nonZeros();
+    const bool same = std::equal(a.outerIndexPtr(), a.outerIndexPtr() + columns + 1, pattern_outer.begin(),
+                                 pattern_outer.end()) &&
+                      std::equal(a.innerIndexPtr(), a.innerIndexPtr() + entries, pattern_inner.begin(),
+                                 pattern_inner.end());
+    if (!same) {
+      sparse.analyzePattern(a);
+      pattern_outer.assign(a.outerIndexPtr(), a.outerIndexPtr() + columns + 1);
+      pattern_inner.assign(a.innerIndexPtr(), a.innerIndexPtr() + entries);
+    }
+    sparse.factorize(a);
     return sparse.info() == Eigen::Success;
   };
   const auto solve = [&](const VecX& b) -> VecX { return contact ? VecX(sparse.solve(b)) : VecX(banded.solve(b)); };
