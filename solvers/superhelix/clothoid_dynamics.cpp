@@ -1,3 +1,4 @@
+#include "step_guard.hpp"
 #include "rodvv/solvers/superhelix/clothoid_dynamics.hpp"
 
 #include <Eigen/Cholesky>
@@ -365,6 +366,7 @@ DynamicState clothoid_step(const RodModel& model, const DynamicState& state, dou
   next.qdot = state.qdot + clothoid_velocity_change(model, state, h, path, root);
   next.q = state.q + h * next.qdot;
   next.time = state.time + h;
+  detail::require_finite_step(std::string("super-clothoid semi-implicit Euler step (") + (path == DynamicsPath::Dense ? "dense" : "linear-time") + " path)", state, next, h);
   return next;
 }
 

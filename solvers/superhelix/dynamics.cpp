@@ -1,3 +1,4 @@
+#include "step_guard.hpp"
 #include "rodvv/solvers/superhelix/dynamics.hpp"
 
 #include <Eigen/Cholesky>
@@ -420,6 +421,7 @@ DynamicState step(const RodModel& model, const DynamicState& state, double h, Dy
   next.qdot = state.qdot + velocity_change(model, state, h, path, root);
   next.q = state.q + h * next.qdot;
   next.time = state.time + h;
+  detail::require_finite_step(std::string("superhelix semi-implicit Euler step (") + (path == DynamicsPath::Dense ? "dense" : "linear-time") + " path)", state, next, h);
   return next;
 }
 

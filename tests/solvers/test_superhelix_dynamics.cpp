@@ -364,4 +364,27 @@ TEST(SuperHelixDynamics, BadInputNamesTheParameter) {
   EXPECT_THROW(sh::bending_frequencies(model, 0), rodvv::InputError);
 }
 
+// A step that diverges is the step's numerical failure (SolverError naming the method and the
+// quantity), not bad input: the state it returns is never handed, non-finite, to the next step's
+// input validation (issue 14, class 4). h = 1e200 is valid input; h^2 K overflows in the step.
+TEST(SuperHelixDynamics, DivergedStepIsASolverErrorNotBadInput) {
+  const sh::RodModel model = loaded_model(4);
+  const auto n = static_cast<Eigen::Index>(sh::dof_count(model));
+  const sh::DynamicState state{sh::natural_strain_vector(model), VecX::Constant(n, 0.5), 0.0};
+  for (auto path : {sh::DynamicsPath::Dense, sh::DynamicsPath::Recursive}) {
+    try {
+      sh::step(model, state, 1e200, path);
+      ADD_FAILURE() << "no error";
+    } catch (const rodvv::SolverError& e) {
+      // The dense path's LDL^T of M + D already fails on the overflowed h^2 K; the linear-time path
+      // runs through, and the step's guard names the non-finite velocities.
+      EXPECT_NE(e.method().find("superhelix"), std::string::npos) << e.method();
+      if (path == sh::DynamicsPath::Recursive) {
+        EXPECT_NE(std::string(e.what()).find("non-finite"), std::string::npos) << e.what();
+        EXPECT_NE(e.method().find("semi-implicit Euler"), std::string::npos) << e.method();
+      }
+    }
+  }
+}
+
 }  // namespace
