@@ -31,9 +31,23 @@ void validate_end(const std::string& name, const EndCondition& end) {
     throw InputError(name + ".rotation", "invalid parameter '" + name + ".rotation' = " + format_value(end.rotation) +
                                              ": must lie in [-" + format_value(kMaxEndRotation) + ", " +
                                              format_value(kMaxEndRotation) + "] rad (1000 turns)");
+  if (end.slides) {
+    if (end.support != EndSupport::Clamped)
+      throw InputError(name + ".slides", "invalid parameter '" + name + ".slides': only a clamped end can slide");
+    if (sliding_axis(end) < 0)
+      throw InputError(name + ".slides", "invalid parameter '" + name +
+                                             ".slides': a sliding clamp's tangent frame.col(0) must be a coordinate "
+                                             "axis (+-e_x, +-e_y or +-e_z)");
+  }
 }
 
 }  // namespace
+
+int sliding_axis(const EndCondition& end) {
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(std::abs(end.frame(k, 0)) - 1.0) <= 1e-14) return k;
+  return -1;
+}
 
 void validate(const RodModel& model) {
   require_at_least("elements", model.elements, 2);
@@ -66,6 +80,7 @@ void validate(const RodModel& model) {
   if (model.tip.support == EndSupport::Clamped && model.root.support == EndSupport::Clamped)
     require_at_least("elements (both ends clamped)", model.elements, 3);
   if (is_inextensible(model) && model.root.support != EndSupport::Free && model.tip.support != EndSupport::Free &&
+      !model.root.slides && !model.tip.slides &&
       !((model.tip.position - model.root.position).norm() <= model.length * (1.0 + 1e-14)))
     throw InputError("tip.position", "invalid parameter 'tip.position': the supported ends are " +
                                          format_value((model.tip.position - model.root.position).norm()) +

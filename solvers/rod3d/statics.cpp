@@ -35,6 +35,7 @@ struct EndPath {
   Vec3 rotation_axis = Vec3::UnitX();
   double rotation_angle = 0.0;                  // of the end tangent, about rotation_axis
   double angle_start = 0.0, angle_end = 0.0;
+  int slide_axis = -1;                          // a sliding clamp's axis (model.hpp), else -1
 
   Vec3 position(double lambda) const { return position_start + lambda * (position_end - position_start); }
   Vec3 tangent(double lambda) const {
@@ -49,6 +50,7 @@ EndPath make_path(const EndCondition& end, const RodState& state, bool at_tip) {
   const std::size_t n = state.elements();
   path.active = true;
   path.clamped = end.support == EndSupport::Clamped;
+  if (end.slides) path.slide_axis = sliding_axis(end);
   path.holds_angle = path.clamped || end.hold_twist;
   path.vertex = at_tip ? n : 0;
   path.inner = at_tip ? n - 1 : 1;
@@ -88,8 +90,11 @@ void place_ends(const RodModel& model, RodState& state, const EndPath& root, con
     if (!path->active) continue;
     if (path->clamped) {
       const Vec3 half_edge = 0.5 * path->sign * ell * path->tangent(lambda);
-      state.position[path->vertex] = path->position(lambda) + half_edge;
-      state.position[path->inner] = path->position(lambda) - half_edge;
+      Vec3 centre = path->position(lambda);
+      if (path->slide_axis >= 0)  // along its axis a sliding clamp stays where the rod has it
+        centre[path->slide_axis] = 0.5 * (state.position[path->vertex] + state.position[path->inner])[path->slide_axis];
+      state.position[path->vertex] = centre + half_edge;
+      state.position[path->inner] = centre - half_edge;
     } else {
       state.position[path->vertex] = path->position(lambda);
     }
@@ -337,6 +342,13 @@ std::vector<std::size_t> held_dofs(const RodModel& model) {
   };
   const auto hold_end = [&](const EndCondition& end, std::size_t vertex, std::size_t inner, std::size_t edge) {
     if (end.support == EndSupport::Free) return;
+    if (end.slides) {  // the transverse coordinates of the clamped edge, and its angle; its multiplier is free
+      const auto axis = static_cast<std::size_t>(sliding_axis(end));
+      for (std::size_t k = 0; k < 3; ++k)
+        if (k != axis) held.insert(held.end(), {layout.vertex(vertex) + k, layout.vertex(inner) + k});
+      held.push_back(layout.angle(edge));
+      return;
+    }
     hold_vertex(vertex);
     // A clamped end edge lies in the clamp: its inextensibility multiplier acts on held vertices only
     // and is part of the support's reaction, so it is held too (else the KKT matrix is singular).

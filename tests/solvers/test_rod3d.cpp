@@ -232,6 +232,54 @@ TEST(Rod3dStatics, PseudoTransientContinuationFindsTheSameEquilibrium) {
   }
 }
 
+// A sliding clamp (model.hpp: EndCondition::slides) keeps its edge's tangent and frame and its
+// transverse position but not its place along the axis: with the tip clamp moved sideways by y0 and
+// a dead pull T along the axis, the rod bends into an S between the clamps, the tip slides in (the span
+// along the axis shortens), and the axial force at the tip edge is the dead pull, T; a fixed clamp at
+// the same place instead carries whatever axial reaction its fixed span needs.
+TEST(Rod3dStatics, SlidingClampTakesTheDeadPullAndSlides) {
+  rod::RodModel model;
+  model.elements = 64;
+  model.length = 2.1;
+  model.stiffness = Vec3(0.8, 1.7, 1.3);
+  model.root.support = rod::EndSupport::Clamped;
+  model.tip.support = rod::EndSupport::Clamped;
+  model.tip.slides = true;
+  model.tip.position = Vec3(model.length, 0.0, 0.0);
+  const double T = 2.5, y0 = 0.3;
+  model.end_force = Vec3(T, 0.0, 0.0);
+  rod::StaticOptions options;
+  options.load_steps = 4;
+  options.tolerance = 1e-12;
+  rod::RodModel moved = model;
+  moved.tip.position = Vec3(model.length, y0, 0.0);
+  const auto result = rod::solve_static(moved, rod::make_straight_state(moved), options);
+  const auto& x = result.state.position;
+  const std::size_t n = model.elements;
+  EXPECT_NEAR(x[n].y(), y0, 1e-14);                   // transverse position held
+  EXPECT_NEAR(x[n - 1].y(), y0, 1e-14);               // and the tangent along e_x
+  EXPECT_LT(x[n].x(), model.length - 1e-3);           // slid in: the S needs arclength
+  // Edge n - 1's multiplier is its axial force n.t = T (e_x.t = 1): the dead pull, to the Newton tolerance.
+  EXPECT_NEAR(result.state.multiplier[n - 1], T, 1e-9 * T);
+  rod::RodModel fixed = moved;
+  fixed.tip.slides = false;
+  fixed.tip.position = Vec3(0.5 * (x[n] + x[n - 1]).x() - 0.01, y0, 0.0);  // a shorter fixed span
+  const auto clamped = rod::solve_static(fixed, rod::make_straight_state(fixed), options);
+  EXPECT_GT(std::abs(clamped.state.multiplier[n - 1] - T), 1e-3 * T);
+  // Bad input: a sliding pin, and a sliding clamp whose tangent is no coordinate axis.
+  rod::RodModel bad = model;
+  bad.tip.support = rod::EndSupport::Pinned;
+  EXPECT_THROW(rod::validate(bad), rodvv::InputError);
+  bad = model;
+  bad.tip.frame = tilted_frame(0.3);
+  try {
+    rod::validate(bad);
+    FAIL();
+  } catch (const rodvv::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("tip.slides"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Rod3dStatics, StraightRodUnderTensionStretchesByFOverEA) {
   rod::RodModel model;
   model.elements = 8;

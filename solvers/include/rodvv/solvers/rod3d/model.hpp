@@ -60,6 +60,11 @@ struct EndCondition {
   bool hold_twist = true;         // pinned: the end edge's material angle is held
   double rotation = 0.0;          // extra rotation of the end cross-section about its tangent (rad),
                                   //   |rotation| <= kMaxEndRotation; applied to clamped and twist-held ends
+  bool slides = false;            // clamped only: the end edge keeps its tangent and material frame but
+                                  //   slides freely along its tangent, which must be a coordinate axis
+                                  //   (+-e_x, e_y or e_z: the two transverse coordinates of its two vertices
+                                  //   are the held dofs); a dead end_force then pulls it (a rod twisted under
+                                  //   constant tension, as in magnetic tweezers)
 };
 
 // The largest imposed end rotation: 1000 turns (the continuation follows any smaller value).
@@ -80,6 +85,9 @@ struct RodModel {
   Vec3 end_moment = Vec3::Zero();  // dead moment on the tip edge
   SelfContact self_contact;        // radius 0: none; else the barrier of self_contact.hpp (in the energy)
 };
+
+// The coordinate axis (0, 1, 2) of a clamp's tangent frame.col(0), or -1 if it is none.
+int sliding_axis(const EndCondition& end);
 
 inline bool has_self_contact(const RodModel& model) { return model.self_contact.radius != 0.0; }
 
