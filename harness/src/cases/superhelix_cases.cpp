@@ -131,7 +131,7 @@ LevelOutput run_roll_up(const Parameters& p, double level) {
   model.length = L;
   model.stiffness = Vec3(0.7 * EI, EI, EI);
   model.root_frame = tilted_frame(0.9);
-  model.root_position = Vec3(0.2, -0.1, 0.4);
+  model.root_position = Vec3(0.2, -0.1, 0.4) * L;  // scaled with L: the problem is self-similar in L
   const Vec3 axis = std::cos(beta) * model.root_frame.col(1) + std::sin(beta) * model.root_frame.col(2);
   const double M = turns * 2.0 * kPi * EI / L;
   model.end_moment = M * axis;
@@ -420,25 +420,41 @@ LevelOutput run_modes(const Parameters& p, double level) {
     relative(fmt::format("omega{}_EI2", n), family[2][n - 1], ref::cantilever_frequency(n, EI2, rhoS, L));
   }
   const double ell = sh::element_length(model), c_twist = std::sqrt(GJ / rhoI0);
-  double discrete_twist = 0.0;
+  // The round-off a torsional frequency can carry: the eigensolver works on 1/omega^2, so its backward
+  // error eps / omega_min^2 is a relative error eps (omega_k / omega_min)^2 on omega_k^2 (large when
+  // the twist is much stiffer than the bending, as for long rods: omega_twist / omega_bend ~ L); the
+  // assembly of M adds ~ N^2 eps (measured 1.2e-15 at N = 8, 4.9e-14 at 64, 2.5e-13 at 128).
+  const double omega_min = modes.frequencies.minCoeff();
+  double discrete_twist = 0.0, discrete_twist_roundoff = 0.0;
   for (std::size_t n = 1; n <= kTwistModes; ++n) {
     const double k = double(2 * n - 1) * kPi / (2.0 * L), omega = family[0][n - 1];
     relative(fmt::format("omega{}_twist", n), omega, k * c_twist);
     const double discrete_squared =
         6.0 * c_twist * c_twist / (ell * ell) * (1.0 - std::cos(k * ell)) / (2.0 + std::cos(k * ell));
-    discrete_twist = std::max(discrete_twist, std::abs(omega / std::sqrt(discrete_squared) - 1.0));
+    const double error = std::abs(omega / std::sqrt(discrete_squared) - 1.0);
+    const double round_off = kEps * (double(model.elements * model.elements) + std::pow(omega / omega_min, 2));
+    discrete_twist = std::max(discrete_twist, error);
+    discrete_twist_roundoff = std::max(discrete_twist_roundoff, error / round_off);
   }
   // Rayleigh-Ritz: every discrete frequency lies above the continuous one.
   output.metrics["min_relative_excess"] = diagnostic(smallest_excess);
-  output.metrics["torsion_discrete_relative"] = value_sample(discrete_twist);
+  output.metrics["torsion_discrete_relative"] = diagnostic(discrete_twist);
+  output.metrics["torsion_discrete_roundoff"] = value_sample(discrete_twist_roundoff);
   output.metrics["mode_mixing"] = diagnostic(mixing);
   // The kappa1 block alone (sh::bending_frequencies, the restricted eigenproblem) vs the EI1 family of
   // the full one: the same modes, up to the round-off of the two reductions.
   const VecX restricted = sh::bending_frequencies(model, kBendingModes);
-  double paths = 0.0;
-  for (std::size_t n = 0; n < kBendingModes; ++n)
-    paths = std::max(paths, std::abs(restricted[static_cast<Eigen::Index>(n)] / family[1][n] - 1.0));
-  output.metrics["restricted_vs_full"] = value_sample(paths);
+  // The full problem's round-off model as for the torsion above (when the bending is much stiffer
+  // than the twist, as for short rods, omega_bend / omega_min is large).
+  double paths = 0.0, paths_roundoff = 0.0;
+  for (std::size_t n = 0; n < kBendingModes; ++n) {
+    const double difference = std::abs(restricted[static_cast<Eigen::Index>(n)] / family[1][n] - 1.0);
+    paths = std::max(paths, difference);
+    paths_roundoff = std::max(paths_roundoff, difference / (kEps * (double(model.elements * model.elements) +
+                                                                     std::pow(family[1][n] / omega_min, 2))));
+  }
+  output.metrics["restricted_vs_full"] = diagnostic(paths);
+  output.metrics["restricted_vs_full_roundoff"] = value_sample(paths_roundoff);
   return output;
 }
 
@@ -603,14 +619,19 @@ void register_superhelix_cases(Registry& registry) {
   const std::string exact_why = "uniform strains are represented exactly: round-off only (64 N eps, N <= 64)";
   {
     std::vector<GateSpec> gates{
-        // N = 1 (one element turning by 2 pi) stops at Newton's round-off floor: measured 7.0e-13 for the
-        // shape and 4.7e-13 for H, <= 2e-15 for N = 2 .. 64; bound 2e-12 (~3 x measured).
-        upper_bound_gate("shape_max_error", 2e-12, GateScope::AllLevels, exact_why + "; Newton floor at N = 1"),
-        upper_bound_gate("tip_gap", 2e-12, GateScope::AllLevels,
+        // N = 1 (one element turning by 2 pi) stops at Newton's round-off floor: when the line search
+        // stalls there, newton.cpp accepts a residual up to 1e3 x the tolerance (1e-14 here), i.e. a
+        // relative curvature error up to 1e-11, which moves the tip of a full turn by 2 pi times that
+        // (relative to L) and H = M^2 / 2EI by twice that. Bounds 2 pi 1e-11 = 6.3e-11 (shape, tip gap)
+        // and 2e-11 (H). Measured at N = 1: shape 1.1e-14 (L = 1), 1.1e-12 (3), 5.2e-12 (7), 7.9e-12
+        // (99), 2.9e-12 (1e3); H 3.5e-12 (L = 7); N = 2 .. 16 stay <= 4e-16 at every L. (The bounds were
+        // 2e-12, 3 x the value at the default L alone, and failed at L = 7 and 1e3: issue 14, class 5.)
+        upper_bound_gate("shape_max_error", 6.3e-11, GateScope::AllLevels, exact_why + "; Newton floor at N = 1"),
+        upper_bound_gate("tip_gap", 6.3e-11, GateScope::AllLevels,
                          "the tip gap is the closed form's (the full circle closes): " + exact_why),
         upper_bound_gate("H_spread", kRoundOff, GateScope::AllLevels, "H = M^2/(2EI) at every station: " + exact_why),
         upper_bound_gate("H_form_difference", kRoundOff, GateScope::AllLevels, "compact = flattened to round-off"),
-        upper_bound_gate("H_mean", 2e-12, GateScope::AllLevels, exact_why + "; Newton floor at N = 1")};
+        upper_bound_gate("H_mean", 2e-11, GateScope::AllLevels, exact_why + "; Newton floor at N = 1")};
     registry.add(in_group(make_case(
         "superhelix/roll-up", "3-D cantilever rolled into a full circle by a dead end moment",
         "Kirchhoff rod clamped with a tilted frame; dead end moment M = 2 pi EI / L about an axis in the "
@@ -820,21 +841,31 @@ void register_superhelix_cases(Registry& registry) {
     gates.push_back(lower_bound_gate("min_relative_excess", 0.0, GateScope::AllLevels,
                                      "Rayleigh-Ritz: discrete frequencies lie above the continuous ones"));
     metrics.push_back(diagnostic_metric("min_relative_excess", "min over the eight of (omega - exact)/exact (>= 0)"));
-    metrics.push_back(invariant_metric("torsion_discrete_relative",
-                                       "max |omega_twist - omega_d| / omega_d, omega_d^2 = (6 GJ / (rho I0 ell^2)) "
-                                       "(1 - cos k ell)/(2 + cos k ell) the discrete closed form"));
+    metrics.push_back(diagnostic_metric("torsion_discrete_relative",
+                                        "max |omega_twist - omega_d| / omega_d, omega_d^2 = (6 GJ / (rho I0 ell^2)) "
+                                        "(1 - cos k ell)/(2 + cos k ell) the discrete closed form"));
+    metrics.push_back(invariant_metric("torsion_discrete_roundoff",
+                                       "max over the torsional modes of |omega_twist / omega_d - 1| / (eps (N^2 + "
+                                       "(omega_twist / omega_min)^2)): the closed-form comparison in units of its "
+                                       "round-off"));
     metrics.push_back(diagnostic_metric("mode_mixing", "largest off-family share of a classified mode's kinetic norm"));
-    metrics.push_back(invariant_metric("restricted_vs_full",
-                                       "max |omega_EI1 (kappa1 block alone, bending_frequencies) / omega_EI1 (full) - 1|"));
-    // Round-off gates: the eigensolver works on K^{-1/2} M K^{-1/2} (1/omega^2), so the low modes carry
-    // a relative error ~ eps (omega / omega_1)^2 times the growth of M's assembly error with N (measured
-    // torsion_discrete_relative 1.2e-15 at N = 8, 4.9e-14 at 64, 8.9e-13 at 256).
-    gates.push_back(upper_bound_gate("torsion_discrete_relative", 1e-12, GateScope::AllLevels,
+    metrics.push_back(diagnostic_metric("restricted_vs_full",
+                                        "max |omega_EI1 (kappa1 block alone, bending_frequencies) / omega_EI1 (full) - 1|"));
+    metrics.push_back(invariant_metric("restricted_vs_full_roundoff",
+                                       "restricted_vs_full per mode / (eps (N^2 + (omega_EI1 / omega_min)^2)), its round-off"));
+    // Round-off gates: the eigensolver works on K^{-1/2} M K^{-1/2} (1/omega^2), so a mode carries a
+    // relative error ~ eps (omega / omega_min)^2, plus the growth of M's assembly error with N (~ N^2
+    // eps; measured torsion_discrete_relative 1.2e-15 at N = 8, 4.9e-14 at 64, 2.5e-13 at 128). Both
+    // comparisons are reported in units of eps (N^2 + (omega / omega_min)^2), so the bound follows L,
+    // EI, GJ and N (issue 14, class 5: the former absolute 1e-12 failed at L = 1e3 and 1e-3 on
+    // comparisons exact to their round-off). Measured over L = 1e-3, 1, 1e3, 1e6 and N = 8 .. 128:
+    // torsion_discrete_roundoff <= 0.29, restricted_vs_full_roundoff <= 0.12; both bounded by 1.
+    gates.push_back(upper_bound_gate("torsion_discrete_roundoff", 1.0, GateScope::AllLevels,
                                      "the twist is a linear finite element bar with consistent mass: its discrete "
-                                     "frequencies in closed form, to round-off (measured <= 8.9e-13 up to N = 256)"));
-    gates.push_back(upper_bound_gate("restricted_vs_full", 1e-12, GateScope::AllLevels,
+                                     "frequencies in closed form, to round-off eps (N^2 + (omega / omega_min)^2)"));
+    gates.push_back(upper_bound_gate("restricted_vs_full_roundoff", 1.0, GateScope::AllLevels,
                                      "the kappa1 block alone and the full 3N problem: the same modes to round-off "
-                                     "(measured <= 5.8e-15)"));
+                                     "eps (N^2 + (omega / omega_min)^2)"));
     Case c = make_case(
         "superhelix/modes", "bending and torsional frequencies of a straight cantilever, tilted clamp",
         "Straight Super-Helix cantilever clamped with a tilted frame, GJ != EI1 != EI2, no load; small oscillations "
