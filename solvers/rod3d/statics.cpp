@@ -274,9 +274,11 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
     }
     if (pseudo_transient) {
       // Pseudo-transient continuation (Kelley & Keyes 1998): the step is taken whole if it keeps the
-      // residual finite and the segments apart, and the pseudo-time step follows the residual
-      // (switched evolution relaxation, tau <- tau r_old / r_new, at most tenfold per step); a step
-      // that fails is retried with a quarter of the pseudo-time step.
+      // residual finite, within 10 x its value (far from equilibrium the residual need not fall at
+      // every step), and the segments apart. After a step that lowered the residual and was not
+      // shortened by the h/2 limit, tau grows by r_old / r_new (switched evolution relaxation),
+      // clamped to [1.2, 10]: at least 1.2, so that tau still grows when only a slow mode (a knot
+      // sliding along its tails) is left. A step that fails is retried with a quarter of tau.
       double twist_change = 0.0;
       RodState trial = displaced(model, state, dz, &twist_change);
       double measure = std::numeric_limits<double>::infinity();
@@ -290,7 +292,8 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
       }
       if (std::isfinite(measure) && measure <= 10.0 * outcome.residual) {
         state = std::move(trial);
-        const double growth = capped ? 1.0 : measure < outcome.residual ? std::clamp(outcome.residual / measure, 1.2, 10.0) : 1.0;
+        const bool progress = !capped && measure < outcome.residual;
+        const double growth = progress ? std::clamp(outcome.residual / measure, 1.2, 10.0) : 1.0;
         pseudo_time = std::min(kMaxPseudoTime, pseudo_time * growth);
       } else {
         pseudo_time *= 0.25;

@@ -4,7 +4,7 @@
 // solvers/rod3d/self_contact.hpp. The Noether quantity H (PHYSICS.md §1.2, §5.1) is T on the straight
 // tails (zero twist: the tip is free to turn) and, the contact being frictionless, T everywhere,
 // through the braid where the rod touches itself, when the field of the barrier felt at s, V_eff, is
-// part of H (solutions.cpp). The case measures max_s |H(s) - T| / T over the stations.
+// part of H (solvers/rod3d/solution.cpp). The case measures max_s |H(s) - T| / T over the stations.
 //
 // Tying (trefoil_tying.hpp): the closure of the braid sigma_1^3 with its lower arc cut and drawn out
 // into tails, in units of the knot's own scale lambda = sqrt(B/T) (the loose-knot loop: apex radius
@@ -15,7 +15,7 @@
 // cannot follow.
 //
 // Scales: the discrete problem is the same in lambda units for every B and T, and depends on the
-// looseness epsilon = h sqrt(T/B) (default 0.1; the loop then spans about 40 radii), C/B and the
+// looseness epsilon = h sqrt(T/B) (default 0.1; the loop is then about 40 radii long), C/B and the
 // barrier stiffness k = kappa T / h^2 (an overlap of about h/sqrt(kappa) at a contact force T).
 // Measured (N = 50, 100, 200, 400): max |H - T|/T = 0.363, 0.164, 0.0726, 0.0277, observed orders
 // 1.15, 1.17, 1.39: first order, as PHYSICS.md §5.1 expects of contact forces lumped at vertices;
@@ -116,21 +116,21 @@ LevelOutput run(const Parameters& p, double level) {
       perpendicular_sum += 0.5 * k.B * kappa_b * kappa_b / k.T;
       turns.push_back(i);
     }
-  double apex_ratio = std::nan("");
-  if (turns.size() >= 2) {
-    std::size_t apex = turns.front() + 1;
-    for (std::size_t i = turns.front() + 1; i <= turns.back(); ++i)
-      if (tx[i] < tx[apex]) apex = i;
-    apex_ratio = k.B * kappa[apex] * kappa[apex] / (4.0 * k.T);
-  }
+  if (turns.size() < 2)
+    throw SolverError(kMethod, "no loop: the tangent turns through perpendicular to the pull at " +
+                                   std::to_string(turns.size()) + " stations (a tied knot's loop: 2)",
+                      result.iterations, result.residual);
+  std::size_t apex = turns.front() + 1;
+  for (std::size_t i = turns.front() + 1; i <= turns.back(); ++i)
+    if (tx[i] < tx[apex]) apex = i;
+  const double apex_ratio = k.B * kappa[apex] * kappa[apex] / (4.0 * k.T);
   // End shortening: the rod's length less the distance its ends span along the pull (root: the
   // support point, s = 0), against the loose loop's 4 lambda.
   const double span = (result.state.position[n] - model.root.position).x();
 
   LevelOutput output;
   output.metrics["H_deviation"] = value_sample(deviation);
-  output.metrics["perpendicular_ratio"] =
-      diagnostic(turns.empty() ? std::nan("") : perpendicular_sum / double(turns.size()));
+  output.metrics["perpendicular_ratio"] = diagnostic(perpendicular_sum / double(turns.size()));
   output.metrics["perpendicular_points"] = diagnostic(double(turns.size()));
   output.metrics["apex_ratio"] = diagnostic(apex_ratio);
   output.metrics["shortening_ratio"] = diagnostic((model.length - span) / (4.0 * k.lambda()));

@@ -41,7 +41,9 @@ struct StaticOptions {
   // Pseudo-transient continuation instead of the line search (statics.cpp): Newton on
   // (D / tau) dz + r(z + dz) = 0 with the pseudo-time step tau growing as the residual falls, for a
   // start far from equilibrium (a knot to be tied) or a rod with zero or near-zero modes (an
-  // isotropic rod turning about its tension axis, a knot sliding along its tails).
+  // isotropic rod turning about its tension axis, a knot sliding along its tails). At large tau it is
+  // Newton: like Newton it converges to an UNSTABLE equilibrium when it starts on one (a straight
+  // rod twisted past its buckling moment); break the symmetry (an imperfection) to leave it.
   bool pseudo_transient = false;
   double initial_pseudo_time = 1.0;  // tau of the first step, in [1e-6, 1e6]
 };
