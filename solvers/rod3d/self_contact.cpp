@@ -1,5 +1,6 @@
 #include "rodvv/solvers/rod3d/self_contact.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -91,13 +92,14 @@ std::vector<ContactPair> self_contacts(const SelfContact& contact, const std::ve
   return find_contacts(contact, x, edge_length);
 }
 
+double contact_pair_energy(const SelfContact& contact, double distance) {
+  const double overlap = std::max(0.0, 2.0 * contact.radius - distance);
+  return contact.stiffness / 3.0 * overlap * overlap * overlap;
+}
+
 double self_contact_energy(const SelfContact& contact, const std::vector<Vec3>& x, double edge_length) {
   double energy = 0.0;
-  const double reach = 2.0 * contact.radius;
-  for (const auto& pair : find_contacts(contact, x, edge_length)) {
-    const double overlap = reach - pair.distance;
-    energy += contact.stiffness / 3.0 * overlap * overlap * overlap;
-  }
+  for (const auto& pair : find_contacts(contact, x, edge_length)) energy += contact_pair_energy(contact, pair.distance);
   return energy;
 }
 

@@ -49,10 +49,9 @@ SpatialRodSolution make_solution(const RodModel& model, const RodState& state) {
   std::vector<double> contact_field(n, 0.0);
   if (has_self_contact(model))
     for (const ContactPair& pair : self_contacts(model.self_contact, state.position, ell)) {
-      const double overlap = 2.0 * model.self_contact.radius - pair.distance;
-      const double energy = model.self_contact.stiffness / 3.0 * overlap * overlap * overlap;
-      contact_field[pair.first] += energy / ell;
-      contact_field[pair.second] += energy / ell;
+      const double field = contact_pair_energy(model.self_contact, pair.distance) / ell;
+      contact_field[pair.first] += field;
+      contact_field[pair.second] += field;
     }
 
   SpatialRodSolution solution;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -129,16 +130,55 @@ std::vector<char> held_mask(const RodModel& model) {
   return held;
 }
 
+// The residual rows of the held dofs are the supports' reactions, not equations: zeroed.
+void zero_held(const std::vector<char>& held, VecX& r) {
+  for (std::size_t k = 0; k < held.size(); ++k)
+    if (held[k]) r[Eigen::Index(k)] = 0.0;
+}
+
+enum class DofKind { Position, Angle, Multiplier };
+
+// What degree of freedom k of the layout is (the last three are the tip vertex's coordinates).
+DofKind dof_kind(const DofLayout& layout, std::size_t k) {
+  const std::size_t slot = k % layout.stride();
+  if (k >= layout.size() - 3 || slot < 3) return DofKind::Position;
+  return slot == 3 ? DofKind::Angle : DofKind::Multiplier;
+}
+
 double scaled_measure(const RodModel& model, const VecX& r, const Scales& scales, const std::vector<char>& held) {
   const DofLayout layout(model);
   double worst = 0.0;
   for (std::size_t k = 0; k < layout.size(); ++k) {
     if (held[k]) continue;
-    const std::size_t slot = k % layout.stride();
-    const double scale = (k >= layout.size() - 3 || slot < 3) ? scales.force : slot == 3 ? scales.moment : scales.length;
+    const DofKind kind = dof_kind(layout, k);
+    const double scale = kind == DofKind::Position ? scales.force : kind == DofKind::Angle ? scales.moment : scales.length;
     worst = std::max(worst, std::abs(r[Eigen::Index(k)]) / scale);
   }
   return worst;
+}
+
+// The state displaced by dz and its scaled residual, or nothing if the step turns a reference twist
+// by more than pi/4 (the energy's chart, discrete_energy.cpp) or pushes two segments through each
+// other (self_contact.hpp): the trial of the line search and of the pseudo-transient step.
+struct Trial {
+  RodState state;
+  double measure = 0.0;
+};
+std::optional<Trial> try_step(const RodModel& model, const RodState& state, const VecX& dz, double lambda,
+                              const std::vector<char>& held) {
+  double twist_change = 0.0;
+  Trial trial{displaced(model, state, dz, &twist_change)};
+  if (twist_change > 0.25 * std::numbers::pi) return std::nullopt;
+  VecX r;
+  try {
+    r = static_residual(model, trial.state, lambda);
+  } catch (const SolverError&) {
+    return std::nullopt;
+  }
+  zero_held(held, r);
+  trial.measure = scaled_measure(model, r, residual_scales(model, trial.state, lambda), held);
+  if (!std::isfinite(trial.measure)) return std::nullopt;
+  return trial;
 }
 
 // The round-off floor of the scaled residual. An edge vector is the difference of two positions of
@@ -175,11 +215,9 @@ void add_pseudo_time(const RodModel& model, const Scales& scales, const std::vec
                      Eigen::SparseMatrix<double>& jacobian) {
   const DofLayout layout(model);
   for (std::size_t k = 0; k < layout.size(); ++k) {
-    if (held[k]) continue;
-    const std::size_t slot = k % layout.stride();
-    const bool position = k >= layout.size() - 3 || slot < 3;
-    if (!position && slot != 3) continue;  // multiplier rows: the constraints stay exact
-    const double mass = position ? scales.force / scales.length : scales.moment;
+    const DofKind kind = dof_kind(layout, k);
+    if (held[k] || kind == DofKind::Multiplier) continue;  // multiplier rows: the constraints stay exact
+    const double mass = kind == DofKind::Position ? scales.force / scales.length : scales.moment;
     jacobian.coeffRef(Eigen::Index(k), Eigen::Index(k)) += mass * inverse_tau;
   }
 }
@@ -226,15 +264,11 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
     return sparse.info() == Eigen::Success;
   };
   const auto solve = [&](const VecX& b) -> VecX { return contact ? VecX(sparse.solve(b)) : VecX(banded.solve(b)); };
-  const auto zero_held = [&](VecX& v) {
-    for (std::size_t k = 0; k < held.size(); ++k)
-      if (held[k]) v[Eigen::Index(k)] = 0.0;
-  };
   const bool pseudo_transient = options.pseudo_transient;
   double pseudo_time = options.initial_pseudo_time;
   for (std::size_t it = 0; it < options.max_iterations; ++it) {
     static_system(model, state, lambda, r, jacobian);
-    zero_held(r);
+    zero_held(held, r);
     const Scales scales = residual_scales(model, state, lambda);
     outcome.residual = scaled_measure(model, r, scales, held);
     if (!std::isfinite(outcome.residual)) return outcome;
@@ -279,21 +313,11 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
       // shortened by the h/2 limit, tau grows by r_old / r_new (switched evolution relaxation),
       // clamped to [1.2, 10]: at least 1.2, so that tau still grows when only a slow mode (a knot
       // sliding along its tails) is left. A step that fails is retried with a quarter of tau.
-      double twist_change = 0.0;
-      RodState trial = displaced(model, state, dz, &twist_change);
-      double measure = std::numeric_limits<double>::infinity();
-      if (twist_change <= 0.25 * std::numbers::pi) {
-        try {
-          VecX r_trial = static_residual(model, trial, lambda);
-          zero_held(r_trial);
-          measure = scaled_measure(model, r_trial, residual_scales(model, trial, lambda), held);
-        } catch (const SolverError&) {
-        }
-      }
-      if (std::isfinite(measure) && measure <= 10.0 * outcome.residual) {
-        state = std::move(trial);
-        const bool progress = !capped && measure < outcome.residual;
-        const double growth = progress ? std::clamp(outcome.residual / measure, 1.2, 10.0) : 1.0;
+      auto trial = try_step(model, state, dz, lambda, held);
+      if (trial && trial->measure <= 10.0 * outcome.residual) {
+        const bool progress = !capped && trial->measure < outcome.residual;
+        const double growth = progress ? std::clamp(outcome.residual / trial->measure, 1.2, 10.0) : 1.0;
+        state = std::move(trial->state);
         pseudo_time = std::min(kMaxPseudoTime, pseudo_time * growth);
       } else {
         pseudo_time *= 0.25;
@@ -301,24 +325,13 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
       }
       continue;
     }
-    // Backtracking on the scaled residual (Armijo 1e-4); a step may turn no reference twist by more
-    // than pi/4 (the energy's chart, discrete_energy.cpp).
+    // Backtracking on the scaled residual (Armijo 1e-4).
     double alpha = 1.0;
     bool accepted = false;
     for (int halving = 0; halving < 30; ++halving, alpha *= 0.5) {
-      double twist_change = 0.0;
-      RodState trial = displaced(model, state, alpha * dz, &twist_change);
-      if (twist_change > 0.25 * std::numbers::pi) continue;
-      VecX r_trial;
-      try {
-        r_trial = static_residual(model, trial, lambda);
-      } catch (const SolverError&) {
-        continue;  // the trial pushed two segments through each other (self_contact.hpp): shorter step
-      }
-      zero_held(r_trial);
-      const double measure = scaled_measure(model, r_trial, residual_scales(model, trial, lambda), held);
-      if (std::isfinite(measure) && measure <= (1.0 - 1e-4 * alpha) * outcome.residual) {
-        state = std::move(trial);
+      auto trial = try_step(model, state, alpha * dz, lambda, held);  // nothing: a shorter step
+      if (trial && trial->measure <= (1.0 - 1e-4 * alpha) * outcome.residual) {
+        state = std::move(trial->state);
         accepted = true;
         break;
       }

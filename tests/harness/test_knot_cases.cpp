@@ -50,30 +50,14 @@ TEST(KnotCases, WrongOrderOrTripledErrorIsRed) {
 }
 
 // The rod of the case's construction at N = 100 (lambda = sqrt(B/T) = 0.5, h = 0.05).
-struct Pulled {
-  rod::RodModel model;
-  rod::RodState start;
-};
-
-Pulled pulled(int half_twists) {
+knot::PulledKnot pulled(int half_twists) {
   const double B = 1.3, T = 5.2, lambda = 0.5, h = 0.05;
   const knot::TiedRod tied = knot::tie_braid_closure({half_twists, 1.25 * h, 10 * h, 0.6 * lambda, 3 * h, 6 * lambda}, 100);
-  Pulled p;
-  p.model.elements = 100;
-  p.model.length = tied.length;
-  p.model.stiffness = Vec3(0.9, B, B);
-  p.model.twist_inertia = 0.0;
-  p.model.root.support = rod::EndSupport::Clamped;
-  p.model.root.position = 0.5 * (tied.vertices[0] + tied.vertices[1]);
-  p.model.root.frame << 1, 0, 0, 0, 0, -1, 0, 1, 0;
-  p.model.end_force = Vec3(T, 0, 0);
-  p.model.self_contact = {h, 500 * T / (h * h)};
-  p.start = rod::make_state(tied.vertices, Vec3::UnitZ());
-  return p;
+  return knot::pull_tied_rod(tied, B, 0.9, T, {h, 500 * T / (h * h)});
 }
 
 TEST(KnotTying, VerticesSitOnTheCurveAtEqualStepsWithoutOverlap) {
-  const Pulled p = pulled(3);
+  const knot::PulledKnot p = pulled(3);
   const double ebar = rod::rest_edge_length(p.model);
   // Chords of arcs of length ebar: never longer, and shorter only where the curve bends (curvature at
   // most 1 / (1.25 h) on the braid: chord >= ebar (1 - (ebar kappa)^2 / 24) >= 0.93 ebar here).
@@ -93,7 +77,7 @@ TEST(KnotTying, TrefoilHoldsAndTheUnknotComesUndone) {
   options.max_iterations = 20000;
   options.tolerance = 1e-9;
   for (int half_twists : {3, 1}) {
-    const Pulled p = pulled(half_twists);
+    const knot::PulledKnot p = pulled(half_twists);
     const auto result = rod::solve_static(p.model, p.start, options);
     const auto pairs = rod::self_contacts(p.model.self_contact, result.state.position, rod::rest_edge_length(p.model));
     const double reach = (result.state.position.back() - result.state.position.front()).x() / p.model.length;

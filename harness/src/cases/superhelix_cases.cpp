@@ -425,6 +425,9 @@ LevelOutput run_modes(const Parameters& p, double level) {
   // the twist is much stiffer than the bending, as for long rods: omega_twist / omega_bend ~ L); the
   // assembly of M adds ~ N^2 eps (measured 1.2e-15 at N = 8, 4.9e-14 at 64, 2.5e-13 at 128).
   const double omega_min = modes.frequencies.minCoeff();
+  const auto round_off = [&](double omega) {
+    return kEps * (double(model.elements * model.elements) + std::pow(omega / omega_min, 2));
+  };
   double discrete_twist = 0.0, discrete_twist_roundoff = 0.0;
   for (std::size_t n = 1; n <= kTwistModes; ++n) {
     const double k = double(2 * n - 1) * kPi / (2.0 * L), omega = family[0][n - 1];
@@ -432,9 +435,8 @@ LevelOutput run_modes(const Parameters& p, double level) {
     const double discrete_squared =
         6.0 * c_twist * c_twist / (ell * ell) * (1.0 - std::cos(k * ell)) / (2.0 + std::cos(k * ell));
     const double error = std::abs(omega / std::sqrt(discrete_squared) - 1.0);
-    const double round_off = kEps * (double(model.elements * model.elements) + std::pow(omega / omega_min, 2));
     discrete_twist = std::max(discrete_twist, error);
-    discrete_twist_roundoff = std::max(discrete_twist_roundoff, error / round_off);
+    discrete_twist_roundoff = std::max(discrete_twist_roundoff, error / round_off(omega));
   }
   // Rayleigh-Ritz: every discrete frequency lies above the continuous one.
   output.metrics["min_relative_excess"] = diagnostic(smallest_excess);
@@ -444,14 +446,13 @@ LevelOutput run_modes(const Parameters& p, double level) {
   // The kappa1 block alone (sh::bending_frequencies, the restricted eigenproblem) vs the EI1 family of
   // the full one: the same modes, up to the round-off of the two reductions.
   const VecX restricted = sh::bending_frequencies(model, kBendingModes);
-  // The full problem's round-off model as for the torsion above (when the bending is much stiffer
-  // than the twist, as for short rods, omega_bend / omega_min is large).
+  // The same round-off model as for the torsion above (when the bending is much stiffer than the
+  // twist, as for short rods, omega_bend / omega_min is large).
   double paths = 0.0, paths_roundoff = 0.0;
   for (std::size_t n = 0; n < kBendingModes; ++n) {
     const double difference = std::abs(restricted[static_cast<Eigen::Index>(n)] / family[1][n] - 1.0);
     paths = std::max(paths, difference);
-    paths_roundoff = std::max(paths_roundoff, difference / (kEps * (double(model.elements * model.elements) +
-                                                                     std::pow(family[1][n] / omega_min, 2))));
+    paths_roundoff = std::max(paths_roundoff, difference / round_off(family[1][n]));
   }
   output.metrics["restricted_vs_full"] = diagnostic(paths);
   output.metrics["restricted_vs_full_roundoff"] = value_sample(paths_roundoff);

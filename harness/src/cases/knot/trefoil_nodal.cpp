@@ -67,25 +67,15 @@ LevelOutput run(const Parameters& p, double level) {
   const Knot k = knot_of(p);
   const TiedRod tied = tie_braid_closure(trefoil_of(k), n);
 
-  rod::RodModel model;
-  model.elements = n;
-  model.length = tied.length;
-  model.stiffness = Vec3(k.C, k.B, k.B);
-  model.twist_inertia = 0.0;
-  model.root.support = rod::EndSupport::Clamped;
-  model.root.position = 0.5 * (tied.vertices[0] + tied.vertices[1]);
-  Mat3 root_frame;
-  root_frame << 1, 0, 0, 0, 0, -1, 0, 1, 0;  // t = e_x, m1 = e_z, m2 = t x m1 = -e_y
-  model.root.frame = root_frame;
-  model.end_force = Vec3(k.T, 0.0, 0.0);
   const double h = k.radius();
-  model.self_contact = {h, k.barrier * k.T / (h * h)};
+  const PulledKnot pulled = pull_tied_rod(tied, k.B, k.C, k.T, {h, k.barrier * k.T / (h * h)});
+  const rod::RodModel& model = pulled.model;
 
   rod::StaticOptions options;
   options.pseudo_transient = true;
   options.max_iterations = 200 * n;  // measured: 340 to 900 iterations at N = 50 .. 400
   options.tolerance = 1e-9;
-  const auto result = rod::solve_static(model, rod::make_state(tied.vertices, Vec3::UnitZ()), options);
+  const auto result = rod::solve_static(model, pulled.start, options);
 
   const auto solution = rod::make_solution(model, result.state);
   const auto flattened = invariants::noether3d_flattened(solution);

@@ -23,16 +23,14 @@ std::vector<Vec3> dense_curve(const BraidClosure& k) {
   const double r = k.strand_offset, a = k.braid_half_length, rho = k.loop_radius, g = k.tail_offset;
   const double bottom = -r - 2.0 * rho;  // the lower arc's straight part
   std::vector<Vec3> core;
-  // From the cut, leftwards along the lower arc, dropping from -g to the arc's plane.
-  for (int i = 0; i <= kSamples; ++i) {
-    const double u = double(i) / kSamples;
-    core.emplace_back(-a * u, bottom, -g * (1.0 - ease(2.0 * u - 1.0)));
-  }
-  // Up the left end of the lower arc into strand 2's start (x = -a, y = -r).
-  for (int i = 1; i <= kSamples; ++i) {
-    const double phi = -0.5 * kPi - kPi * double(i) / kSamples;
-    core.emplace_back(-a + rho * std::cos(phi), -r - rho + rho * std::sin(phi), 0.0);
-  }
+  // kSamples points (the start excluded) on the circle of radius rho about (cx, cy) in the plane z = 0,
+  // from the angle `from` through `sweep`.
+  const auto arc = [&](double cx, double cy, double from, double sweep) {
+    for (int i = 1; i <= kSamples; ++i) {
+      const double phi = from + sweep * double(i) / kSamples;
+      core.emplace_back(cx + rho * std::cos(phi), cy + rho * std::sin(phi), 0.0);
+    }
+  };
   const auto strand = [&](double phase) {
     for (int i = 1; i <= kSamples; ++i) {
       const double x = -a + 2.0 * a * double(i) / kSamples;
@@ -40,23 +38,20 @@ std::vector<Vec3> dense_curve(const BraidClosure& k) {
       core.emplace_back(x, r * std::cos(psi), r * std::sin(psi));
     }
   };
-  // Strand 2 (starts below the axis), the upper arc (right end, straight back, left end), strand 1.
-  strand(kPi);
-  for (int i = 1; i <= kSamples; ++i) {
-    const double phi = -0.5 * kPi + kPi * double(i) / kSamples;
-    core.emplace_back(a + rho * std::cos(phi), r + rho + rho * std::sin(phi), 0.0);
+  // From the cut, leftwards along the lower arc, dropping from -g to the arc's plane.
+  for (int i = 0; i <= kSamples; ++i) {
+    const double u = double(i) / kSamples;
+    core.emplace_back(-a * u, bottom, -g * (1.0 - ease(2.0 * u - 1.0)));
   }
+  arc(-a, -r - rho, -0.5 * kPi, -kPi);  // up the lower arc's left end into strand 2's start (-a, -r)
+  strand(kPi);                          // strand 2, starting below the axis
+  // The upper arc: its right end, straight back, its left end.
+  arc(a, r + rho, -0.5 * kPi, kPi);
   for (int i = 1; i <= kSamples; ++i) core.emplace_back(a - 2.0 * a * double(i) / kSamples, r + 2.0 * rho, 0.0);
-  for (int i = 1; i <= kSamples; ++i) {
-    const double phi = 0.5 * kPi + kPi * double(i) / kSamples;
-    core.emplace_back(-a + rho * std::cos(phi), r + rho + rho * std::sin(phi), 0.0);
-  }
-  strand(0.0);
-  // The right end of the lower arc, then leftwards to the cut, rising to +g.
-  for (int i = 1; i <= kSamples; ++i) {
-    const double phi = 0.5 * kPi - kPi * double(i) / kSamples;
-    core.emplace_back(a + rho * std::cos(phi), -r - rho + rho * std::sin(phi), 0.0);
-  }
+  arc(-a, r + rho, 0.5 * kPi, kPi);
+  strand(0.0);                          // strand 1
+  arc(a, -r - rho, 0.5 * kPi, -kPi);    // the lower arc's right end
+  // Leftwards to the cut, rising to +g.
   for (int i = 1; i <= kSamples; ++i) {
     const double u = double(i) / kSamples;
     core.emplace_back(a * (1.0 - u), bottom, g * ease(2.0 * u));
@@ -102,6 +97,23 @@ TiedRod tie_braid_closure(const BraidClosure& knot, std::size_t elements) {
     rod.vertices.push_back(curve[j] + u * (curve[j + 1] - curve[j]));
   }
   return rod;
+}
+
+PulledKnot pull_tied_rod(const TiedRod& tied, double B, double C, double T, const solvers::rod3d::SelfContact& contact) {
+  namespace rod = solvers::rod3d;
+  PulledKnot knot;
+  rod::RodModel& model = knot.model;
+  model.elements = tied.vertices.size() - 1;
+  model.length = tied.length;
+  model.stiffness = Vec3(C, B, B);
+  model.twist_inertia = 0.0;
+  model.root.support = rod::EndSupport::Clamped;
+  model.root.position = 0.5 * (tied.vertices[0] + tied.vertices[1]);
+  model.root.frame << 1, 0, 0, 0, 0, -1, 0, 1, 0;  // t = e_x, m1 = e_z, m2 = t x m1 = -e_y
+  model.end_force = Vec3(T, 0.0, 0.0);
+  model.self_contact = contact;
+  knot.start = rod::make_state(tied.vertices, Vec3::UnitZ());
+  return knot;
 }
 
 }  // namespace rodvv::harness::knot_cases

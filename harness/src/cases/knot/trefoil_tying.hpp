@@ -18,6 +18,8 @@
 #include <vector>
 
 #include "rodvv/common/eigen_types.hpp"
+#include "rodvv/solvers/rod3d/model.hpp"
+#include "rodvv/solvers/rod3d/state.hpp"
 
 namespace rodvv::harness::knot_cases {
 
@@ -37,5 +39,14 @@ struct TiedRod {
 
 // InputError unless every length is finite and > 0 and half_twists is odd and >= 1, elements >= 3.
 TiedRod tie_braid_closure(const BraidClosure& knot, std::size_t elements);
+
+// The tied rod as the knot cases pull it: inextensible, bending B about both axes, twisting C, root
+// clamped on its tail (t = e_x, m1 = e_z), tip free under the dead pull T e_x, self-contact `contact`;
+// the start state has the root's frame carried along by parallel transport.
+struct PulledKnot {
+  solvers::rod3d::RodModel model;
+  solvers::rod3d::RodState start;
+};
+PulledKnot pull_tied_rod(const TiedRod& tied, double B, double C, double T, const solvers::rod3d::SelfContact& contact);
 
 }  // namespace rodvv::harness::knot_cases

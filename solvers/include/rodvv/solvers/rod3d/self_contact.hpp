@@ -52,6 +52,9 @@ struct ContactPair {
 // edge_length not > 0.
 std::vector<ContactPair> self_contacts(const SelfContact& contact, const std::vector<Vec3>& x, double edge_length);
 
+// phi(d) = (k/3) (2h - d)^3 for d < 2h, else 0: the barrier energy of one pair at distance d.
+double contact_pair_energy(const SelfContact& contact, double distance);
+
 // Sum of phi over the pairs in contact.
 double self_contact_energy(const SelfContact& contact, const std::vector<Vec3>& x, double edge_length);
 
