@@ -16,6 +16,14 @@
 // Long-time energy cases  pendulum/long-time-energy/<method>: libration at 90 deg over 1000
 //   periods; a bounded energy error (late/early deviation ratio ~ 1) for symplectic methods, a
 //   secular drift (ratio >> 1) for RK4 and explicit Euler.
+//
+// Units. Every case runs at omega = 2.7, not 1: at omega = 1 a solver that uses omega where it
+// needs omega^2 (or 1/omega for omega) is right. The problem has one time scale, 1/omega, and the
+// cases state everything in it: the step is omega dt, the separatrix horizon omega t_end, the
+// period omega T, rates theta'/omega, energies E/omega^2. Their results are therefore independent of
+// omega up to round-off, omega is a unit scale (case_info.hpp: Parameter::unit_scale), and a bound
+// measured at the defaults holds at any omega. Not for dopri5: its controller's tolerance applies to
+// theta (rad) and theta' (rad/time) alike, so its error per tolerance depends on omega.
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -41,6 +49,11 @@ namespace pend = rodvv::solvers::pendulum;
 constexpr double kPi = std::numbers::pi;
 constexpr double kBoundedGrowth = 2.0;
 constexpr double kDriftGrowth = 10.0;
+constexpr double kDefaultOmega = 2.7;  // not 1 (see Units above)
+// The separatrix approaches the unstable equilibrium as e^(-omega t), and errors grow as e^(omega t):
+// beyond omega t_end = 8 the default levels are no longer asymptotic (measured at omega t_end = 10:
+// explicit Euler order 0.50, symplectic Euler 2.0 against its order 1; at 12 Stoermer-Verlet 1.68).
+constexpr double kSeparatrixHorizon = 8.0;
 
 constexpr const char* kCitation =
     "Jacobi elliptic closed form: DLMF §22.19(i); Byrd & Friedman, Handbook of Elliptic Integrals "
@@ -55,7 +68,7 @@ struct Motion {
   MotionKind kind;
   std::string title;
   double amplitude;  // theta0 [deg] (libration), v0 (rotation), unused (separatrix)
-  double horizon;    // periods (libration), turns (rotation), t_end (separatrix)
+  double horizon;    // periods (libration), turns (rotation), omega t_end (separatrix)
 };
 
 const std::vector<Motion>& motions() {
@@ -69,9 +82,14 @@ const std::vector<Motion>& motions() {
   return list;
 }
 
-Parameters motion_parameters(const Motion& motion) {
-  Parameters parameters{make_parameter("omega", 1.0, 0.0, 1e6, true, false, "1/time",
-                                       "natural frequency sqrt(g/l)")};
+Parameter omega_parameter(bool unit_scale) {
+  Parameter omega = make_parameter("omega", kDefaultOmega, 0.0, 1e6, true, false, "1/time", "natural frequency sqrt(g/l)");
+  omega.unit_scale = unit_scale;
+  return omega;
+}
+
+Parameters motion_parameters(const Motion& motion, bool omega_is_unit_scale) {
+  Parameters parameters{omega_parameter(omega_is_unit_scale)};
   switch (motion.kind) {
     case MotionKind::Libration:
       parameters.push_back(make_parameter("theta0_deg", motion.amplitude, 0.0, 180.0, true, true,
@@ -86,8 +104,8 @@ Parameters motion_parameters(const Motion& motion) {
                                           "integration horizon in full turns"));
       break;
     case MotionKind::Separatrix:
-      parameters.push_back(make_parameter("t_end", motion.horizon, 0.0, 50.0, true, false,
-                                          "time", "integration horizon"));
+      parameters.push_back(make_parameter("omega_t_end", motion.horizon, 0.0, kSeparatrixHorizon, true, false,
+                                          "1/omega", "integration horizon in units of 1/omega"));
       break;
   }
   return parameters;
@@ -111,7 +129,7 @@ double horizon_time(const Motion& motion, const Parameters& parameters,
   switch (motion.kind) {
     case MotionKind::Libration: return parameter_value(parameters, "periods") * *ref::period(exact);
     case MotionKind::Rotation: return parameter_value(parameters, "turns") * *ref::period(exact);
-    case MotionKind::Separatrix: return parameter_value(parameters, "t_end");
+    case MotionKind::Separatrix: return parameter_value(parameters, "omega_t_end") / ref::omega_of(exact);
   }
   throw std::logic_error("unknown motion kind");
 }
@@ -142,10 +160,10 @@ LevelOutput run_accuracy_level(const Motion& motion, const pend::MethodInfo& met
   pend::Settings settings;
   settings.method = method.method;
   if (method.adaptive) {
-    settings.dt = parameter_value(parameters, "output_dt");
+    settings.dt = parameter_value(parameters, "omega_output_dt") / omega;
     settings.tolerance = level;
   } else {
-    settings.dt = level;
+    settings.dt = level / omega;  // the level is omega dt
   }
   const Trajectory trajectory = pend::integrate(problem, settings);
 
@@ -156,7 +174,7 @@ LevelOutput run_accuracy_level(const Motion& motion, const pend::MethodInfo& met
     const double error = trajectory.theta[i] - expected.theta;
     const double rate = (trajectory.theta_dot[i] - expected.theta_dot) / omega;
     theta_error = std::max(theta_error, std::abs(error));
-    rate_error = std::max(rate_error, std::abs(rate) * omega);
+    rate_error = std::max(rate_error, std::abs(rate));
     state_error = std::max(state_error, std::hypot(error, rate));
     times.push_back(trajectory.t[i]);
     theta_errors.push_back(error);
@@ -170,7 +188,8 @@ LevelOutput run_accuracy_level(const Motion& motion, const pend::MethodInfo& met
   output.metrics["theta_max_error"] = {theta_error, 0.0, theta_error};
   output.metrics["theta_dot_max_error"] = {rate_error, 0.0, rate_error};
   const auto energy = invariants::pendulum_energy_statistics(trajectory, omega);
-  output.metrics["energy_max_deviation"] = {energy.max_abs_deviation, 0.0, energy.max_abs_deviation};
+  const double energy_deviation = energy.max_abs_deviation / (omega * omega);
+  output.metrics["energy_max_deviation"] = {energy_deviation, 0.0, energy_deviation};
 
   if (const auto period = ref::period(exact)) {
     // Libration crosses theta = 0 twice per period; rotation crosses theta = pi (mod 2 pi) once
@@ -178,7 +197,7 @@ LevelOutput run_accuracy_level(const Motion& motion, const pend::MethodInfo& met
     const bool libration = motion.kind == MotionKind::Libration;
     const auto crossings = crossing_times(trajectory, libration ? 0.0 : kPi, libration ? 0.0 : 2 * kPi);
     if (const auto measured = period_from_crossings(crossings, libration ? 2.0 : 1.0))
-      output.metrics["period"] = error_sample(*measured, *period);
+      output.metrics["period"] = error_sample(omega * *measured, omega * *period);
   }
   if (method.adaptive) {
     output.metrics["error_over_tolerance"] = {state_error / level, std::nullopt, std::nullopt};
@@ -203,16 +222,17 @@ Case accuracy_case(const Motion& motion, const pend::MethodInfo& method) {
   info.citation = kCitation;
   info.method = fmt::format("{} (order {}{}); {}", method.name, method.order,
                             method.symplectic ? ", symplectic" : "", method.citation);
-  info.parameters = motion_parameters(motion);
+  info.parameters = motion_parameters(motion, !method.adaptive);
   const LevelPlan plan = pendulum_level_plan(motion.id, method.id, method.order);
   const auto order = static_cast<double>(method.order);
   if (method.adaptive) {
-    info.parameters.push_back(make_parameter("output_dt", 0.005, 0.0, 1.0, true, false, "time",
-                                             "dense-output sampling interval"));
+    info.parameters.push_back(make_parameter("omega_output_dt", 0.005, 0.0, 1.0, true, false, "1/omega",
+                                             "dense-output sampling interval in units of 1/omega"));
     info.resolution = {"tol", "absolute = relative error tolerance of the step-size controller",
                        ResolutionScale::StepSize, plan.levels, plan.extended_levels};
   } else {
-    info.resolution = {"dt", "time step", ResolutionScale::StepSize, plan.levels, plan.extended_levels};
+    info.resolution = {"omega_dt", "time step in units of 1/omega", ResolutionScale::StepSize, plan.levels,
+                       plan.extended_levels};
   }
   const std::optional<double> metric_order =
       method.adaptive ? std::optional<double>(plan.tolerance_order) : std::optional<double>(order);
@@ -221,13 +241,13 @@ Case accuracy_case(const Motion& motion, const pend::MethodInfo& method) {
        "max sqrt(dtheta^2 + (dtheta'/omega)^2) over the compared samples", false, metric_order},
       {"theta_max_error", MetricKind::Error, "rad", "max |theta - theta_exact| over the compared samples",
        false, metric_order},
-      {"theta_dot_max_error", MetricKind::Error, "rad/time", "max |theta' - theta'_exact|", false,
+      {"theta_dot_max_error", MetricKind::Error, "rad", "max |theta' - theta'_exact| / omega", false,
        metric_order},
-      {"energy_max_deviation", MetricKind::Invariant, "omega^2", "max |E(t) - E(0)|", false, metric_order},
+      {"energy_max_deviation", MetricKind::Invariant, "", "max |E(t) - E(0)| / omega^2", false, metric_order},
   };
   if (motion.kind != MotionKind::Separatrix)
-    info.metrics.push_back({"period", MetricKind::Error, "time",
-                            "mean period from the zero crossings (Hermite-located) vs the exact period",
+    info.metrics.push_back({"period", MetricKind::Error, "1/omega",
+                            "omega T: the mean period from the zero crossings (Hermite-located) vs the exact period",
                             true, metric_order});
   if (method.adaptive) {
     info.metrics.push_back({"error_over_tolerance", MetricKind::Diagnostic, "",
@@ -272,9 +292,11 @@ Case accuracy_case(const Motion& motion, const pend::MethodInfo& method) {
 
 // ---- long-time energy ---------------------------------------------------------------------------
 
-LevelOutput run_energy_level(const pend::MethodInfo& method, const Parameters& parameters, double dt) {
+LevelOutput run_energy_level(const pend::MethodInfo& method, const Parameters& parameters, double omega_dt) {
   const ref::Libration exact{parameter_value(parameters, "omega"),
                              parameter_value(parameters, "theta0_deg") * kPi / 180.0};
+  const double dt = omega_dt / exact.omega;
+  const double energy_unit = exact.omega * exact.omega;
   const double periods = parameter_value(parameters, "periods");
   const double t_end = periods * ref::libration_period(exact);
   pend::Settings settings;
@@ -290,15 +312,16 @@ LevelOutput run_energy_level(const pend::MethodInfo& method, const Parameters& p
   const auto history = invariants::pendulum_energy_history(trajectory, exact.omega);
 
   std::vector<double> deviation(history.size());
-  for (std::size_t i = 0; i < history.size(); ++i) deviation[i] = history[i] - stats.initial;
+  for (std::size_t i = 0; i < history.size(); ++i) deviation[i] = (history[i] - stats.initial) / energy_unit;
   LevelOutput output;
-  output.metrics["energy_max_deviation"] = {stats.max_abs_deviation, 0.0, stats.max_abs_deviation};
+  const double max_deviation = stats.max_abs_deviation / energy_unit;
+  output.metrics["energy_max_deviation"] = {max_deviation, 0.0, max_deviation};
   const double growth = stats.early_deviation > 0.0 ? stats.late_deviation / stats.early_deviation
                                                     : std::numeric_limits<double>::infinity();
   output.metrics["energy_growth_ratio"] = {growth, std::nullopt, std::nullopt};
-  output.metrics["energy_drift_rate"] = {stats.drift_slope, std::nullopt, std::nullopt};
+  output.metrics["energy_drift_rate"] = {stats.drift_slope / (energy_unit * exact.omega), std::nullopt, std::nullopt};
   output.metrics["steps"] = {static_cast<double>(trajectory.steps), std::nullopt, std::nullopt};
-  output.series.push_back(thin_series("energy_error", "t", "E(t) - E(0)", trajectory.t, deviation));
+  output.series.push_back(thin_series("energy_error", "t", "(E(t) - E(0)) / omega^2", trajectory.t, deviation));
   return output;
 }
 
@@ -317,19 +340,20 @@ Case energy_case(const pend::MethodInfo& method) {
   info.method = fmt::format("{} (order {}{})", method.name, method.order,
                             method.symplectic ? ", symplectic" : ", not symplectic");
   info.parameters = {
-      make_parameter("omega", 1.0, 0.0, 1e6, true, false, "1/time", "natural frequency"),
+      omega_parameter(true),
       make_parameter("theta0_deg", 90.0, 0.0, 180.0, true, true, "deg", "release angle"),
       make_parameter("periods", 1000.0, 10.0, 1e5, false, false, "", "integration horizon in periods"),
   };
   const LevelPlan plan = pendulum_level_plan("long-time-energy", method.id, method.order);
-  info.resolution = {"dt", "time step", ResolutionScale::StepSize, plan.levels, plan.extended_levels};
+  info.resolution = {"omega_dt", "time step in units of 1/omega", ResolutionScale::StepSize, plan.levels,
+                     plan.extended_levels};
   const auto order = static_cast<double>(method.order);
   info.metrics = {
-      {"energy_max_deviation", MetricKind::Invariant, "omega^2", "max |E(t) - E(0)| over the run",
+      {"energy_max_deviation", MetricKind::Invariant, "", "max |E(t) - E(0)| / omega^2 over the run",
        false, method.symplectic ? std::optional<double>(order) : std::nullopt},
       {"energy_growth_ratio", MetricKind::Diagnostic, "",
        "max |E - E(0)| over the last period / over the first period", false, std::nullopt},
-      {"energy_drift_rate", MetricKind::Diagnostic, "omega^2/time", "least-squares slope dE/dt",
+      {"energy_drift_rate", MetricKind::Diagnostic, "", "least-squares slope dE/dt / omega^3",
        false, std::nullopt},
       {"steps", MetricKind::Diagnostic, "", "steps", false, std::nullopt},
   };

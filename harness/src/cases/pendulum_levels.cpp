@@ -11,7 +11,8 @@ namespace rodvv::harness {
 
 namespace {
 
-// One row per (motion, method). Levels are `count` refinements of `coarsest` by `ratio` (2 for a
+// One row per (motion, method). Levels (omega dt, the step in units of 1/omega: pendulum_cases.cpp,
+// Units; a tolerance for dopri5) are `count` refinements of `coarsest` by `ratio` (2 for a
 // step, 10 for a tolerance); the extended sweep adds two further refinements (or, where those
 // would reach the round-off floor, two coarser levels in front). Bounds are C h^p with C the value
 // measured at the finest default level (2026-11-21, GCC 12 -O3, x86-64) times kBoundFactor over

@@ -21,6 +21,10 @@ struct Parameter {
   std::string unit;
   std::string description;
   ParameterKind kind = ParameterKind::Real;
+  // A unit of the problem (the pendulum's omega): the case's levels and metrics are in units built
+  // from it, so its results do not depend on it (up to round-off) and bounds measured at the
+  // default parameters still hold when only unit scales are changed (sweep.cpp).
+  bool unit_scale = false;
 };
 
 // The resolution parameter of a sweep. A StepSize level is the mesh size h itself (dt, a
