@@ -65,24 +65,51 @@ Resolution element_resolution(const ElasticaLevelPlan& plan) {
   return {"N", "number of elements", ResolutionScale::Count, plan.levels, plan.extended_levels};
 }
 
+// Units. The closed-form cases (pinned-pinned, Mattiasson, roll-up) run at L = 1.7 and EI = 2.3, not
+// 1, so that a solver mixing up L, EI or their powers is wrong by O(1), and report every metric in
+// the problem's own units: lengths over L, curvatures times L, forces and H times L^2/EI. Their
+// results are then the same at any L and EI up to round-off, L and EI are unit scales
+// (case_info.hpp: Parameter::unit_scale), and the bounds of elastica_levels.cpp (measured at L = EI
+// = 1) hold at any L and EI.
+constexpr double kDefaultLength = 1.7;
+constexpr double kDefaultStiffness = 2.3;
+
 Parameter length_parameter() {
-  return make_parameter("L", 1.0, 0.0, 1e6, true, false, "length", "rod length");
+  Parameter p = make_parameter("L", kDefaultLength, 0.0, 1e6, true, false, "length", "rod length");
+  p.unit_scale = true;
+  return p;
 }
 Parameter stiffness_parameter() {
-  return make_parameter("EI", 1.0, 0.0, 1e12, true, false, "force length^2", "bending stiffness");
+  Parameter p = make_parameter("EI", kDefaultStiffness, 0.0, 1e12, true, false, "force length^2", "bending stiffness");
+  p.unit_scale = true;
+  return p;
+}
+
+// The units a case reports in: length L, force EI/L^2 (1 and 1 for the cases posed at L = EI = 1).
+struct Units {
+  double length = 1.0;
+  double stiffness = 1.0;
+  double force() const { return stiffness / (length * length); }
+};
+Units units_of(const Parameters& parameters) {
+  return {parameter_value(parameters, "L"), parameter_value(parameters, "EI")};
 }
 
 MetricSample error_sample(double computed, double reference) {
   return {computed, reference, std::abs(computed - reference)};
 }
+// computed and reference in `unit`s.
+MetricSample error_sample(double computed, double reference, double unit) {
+  return error_sample(computed / unit, reference / unit);
+}
 
 // H along the solution and its spread (PHYSICS.md §1.4: not conserved exactly by a discretisation;
 // its spread converges with the mesh).
 void add_noether_metrics(LevelOutput& output, const PlanarRodSolution& solution,
-                         std::optional<double> exact_h) {
+                         std::optional<double> exact_h, const Units& units = {}) {
   const auto spread = invariants::planar_noether_spread(solution);
   output.metrics["H_spread"] = {spread.spread, 0.0, spread.spread};
-  if (exact_h) output.metrics["H_mean"] = error_sample(spread.mean, *exact_h);
+  if (exact_h) output.metrics["H_mean"] = error_sample(spread.mean, *exact_h, units.force());
   const auto h = invariants::planar_noether_h(solution);
   output.series.push_back(thin_series("H(s)", "s", "H", solution.s, h));
 }
@@ -114,9 +141,10 @@ ShapeComparison compare_shape(const PlanarRodSolution& solution, ExactPosition&&
 
 // Shape error metric and the shape, tension and H(s) plots shared by every case with a closed form.
 void add_shape_metrics(LevelOutput& output, const PlanarRodSolution& solution,
-                       const ShapeComparison& shape, double exact_h) {
-  output.metrics["shape_max_error"] = {shape.max_error, 0.0, shape.max_error};
-  add_noether_metrics(output, solution, exact_h);
+                       const ShapeComparison& shape, double exact_h, const Units& units) {
+  const double shape_error = shape.max_error / units.length;
+  output.metrics["shape_max_error"] = {shape_error, 0.0, shape_error};
+  add_noether_metrics(output, solution, exact_h, units);
   add_shape_series(output, solution, shape.exact_x, shape.exact_y);
 }
 
@@ -191,15 +219,16 @@ LevelOutput run_pinned_level(e2d::Scheme scheme, const Parameters& parameters, d
     const ref::ElasticaPoint point = ref::pinned_point(column, theta0, s);
     return std::pair{point.x, point.y};
   });
-  output.metrics["y_M"] = error_sample(solution.y[mid], exact.y_M);
-  output.metrics["kappa_M"] = error_sample(std::abs(solution.kappa[mid]), exact.kappa_M);
+  const Units units{column.L, column.EI};
+  output.metrics["y_M"] = error_sample(solution.y[mid], exact.y_M, units.length);
+  output.metrics["kappa_M"] = error_sample(std::abs(solution.kappa[mid]), exact.kappa_M, 1.0 / units.length);
   output.metrics["theta0"] = error_sample(solution.theta.front(), theta0);
   if (displacement_control)
-    output.metrics["reaction_P"] = error_sample(-solution.force_x.back(), exact.P);
+    output.metrics["reaction_P"] = error_sample(-solution.force_x.back(), exact.P, units.force());
   else
-    output.metrics["shortening"] = error_sample(column.L - solution.x.back(), exact.shortening);
+    output.metrics["shortening"] = error_sample(column.L - solution.x.back(), exact.shortening, units.length);
   output.metrics["newton_iterations"] = {double(solution.iterations), std::nullopt, std::nullopt};
-  add_shape_metrics(output, solution, shape, exact.H);
+  add_shape_metrics(output, solution, shape, exact.H, units);
   return output;
 }
 
@@ -227,15 +256,16 @@ LevelOutput run_mattiasson_level(e2d::Scheme scheme, const Parameters& parameter
   const PlanarRodSolution solution = e2d::solve_static(problem, {scheme, element_count(level)}, options);
 
   LevelOutput output;
-  output.metrics["tip_w"] = error_sample(-solution.y.back(), tip.w);
-  output.metrics["tip_u"] = error_sample(L - solution.x.back(), tip.u);
+  const Units units = units_of(parameters);
+  output.metrics["tip_w"] = error_sample(-solution.y.back(), tip.w, L);
+  output.metrics["tip_u"] = error_sample(L - solution.x.back(), tip.u, L);
   output.metrics["tip_phi"] = error_sample(-solution.theta.back(), tip.phi_L);
   const auto shape = compare_shape(solution, [&](double s) {
     const ref::CantileverPoint point = ref::cantilever_point(cantilever, s);
     return std::pair{point.x, -point.w};  // w is the downward deflection
   });
   output.metrics["newton_iterations"] = {double(solution.iterations), std::nullopt, std::nullopt};
-  add_shape_metrics(output, solution, shape, tip.H);
+  add_shape_metrics(output, solution, shape, tip.H, units);
   return output;
 }
 
@@ -261,9 +291,9 @@ LevelOutput run_roll_up_level(e2d::Scheme scheme, const Parameters& parameters, 
     return std::pair{point.x, point.y};
   });
   const ref::ElasticaPoint end = ref::end_moment_point(cantilever, L);
-  output.metrics["tip_position"] = {std::hypot(solution.x.back(), solution.y.back()), std::hypot(end.x, end.y),
-                                    std::hypot(solution.x.back() - end.x, solution.y.back() - end.y)};
-  add_shape_metrics(output, solution, shape, ref::end_moment_invariant(cantilever));
+  output.metrics["tip_position"] = {std::hypot(solution.x.back(), solution.y.back()) / L, std::hypot(end.x, end.y) / L,
+                                    std::hypot(solution.x.back() - end.x, solution.y.back() - end.y) / L};
+  add_shape_metrics(output, solution, shape, ref::end_moment_invariant(cantilever), units_of(parameters));
   return output;
 }
 
@@ -425,7 +455,7 @@ const MetricSpec kNewtonIterations{"newton_iterations", MetricKind::Diagnostic, 
                                    "Newton iterations (all load steps)", false, std::nullopt};
 
 MetricSpec shape_error_metric(std::optional<double> order = 2.0) {
-  return {"shape_max_error", MetricKind::Error, "length", "max |r_i - r_exact(s_i)| over nodes", false,
+  return {"shape_max_error", MetricKind::Error, "L", "max |r_i - r_exact(s_i)| / L over nodes", false,
           order};
 }
 
@@ -441,7 +471,7 @@ std::vector<MetricSpec> noether_metrics(bool has_exact_h, std::optional<double> 
                                    "max |H(s) - mean H| / natural scale (PHYSICS.md §1.4)", false,
                                    spread_order}};
   if (has_exact_h)
-    metrics.push_back(error_metric("H_mean", "force", "mean of H(s) vs the closed-form H", true));
+    metrics.push_back(error_metric("H_mean", "EI/L^2", "mean of H(s) vs the closed-form H", true));
   return metrics;
 }
 
@@ -454,10 +484,10 @@ void register_elastica_cases(Registry& registry) {
       const std::string motion = fmt::format("pinned-pinned-{:g}", degrees);
       auto metrics = std::vector<MetricSpec>{
           shape_error_metric(),
-          error_metric("y_M", "length", "midspan deflection vs L k/K", true),
-          error_metric("kappa_M", "1/length", "|midspan curvature| vs 4kK/L", true),
+          error_metric("y_M", "L", "midspan deflection vs L k/K", true),
+          error_metric("kappa_M", "1/L", "|midspan curvature| vs 4kK/L", true),
           error_metric("theta0", "rad", "end rotation", true, std::nullopt),
-          error_metric("shortening", "length", "end shortening vs 2L(1 - E/K)", true),
+          error_metric("shortening", "L", "end shortening vs 2L(1 - E/K)", true),
           kNewtonIterations};
       for (auto& m : noether_metrics(true)) metrics.push_back(m);
       registry.add(make_case(
@@ -473,10 +503,10 @@ void register_elastica_cases(Registry& registry) {
     {
       auto metrics = std::vector<MetricSpec>{
           shape_error_metric(),
-          error_metric("y_M", "length", "midspan deflection", true),
-          error_metric("kappa_M", "1/length", "|midspan curvature|", true),
+          error_metric("y_M", "L", "midspan deflection", true),
+          error_metric("kappa_M", "1/L", "|midspan curvature|", true),
           error_metric("theta0", "rad", "end rotation", true, std::nullopt),
-          error_metric("reaction_P", "force", "reaction at the displaced pin vs 4K^2 EI/L^2", true),
+          error_metric("reaction_P", "EI/L^2", "reaction at the displaced pin vs 4K^2 EI/L^2", true),
           kNewtonIterations};
       for (auto& m : noether_metrics(true)) metrics.push_back(m);
       registry.add(make_case(
@@ -491,8 +521,8 @@ void register_elastica_cases(Registry& registry) {
     for (double alpha : {1.0, 2.0, 5.0, 10.0}) {
       const std::string motion = fmt::format("mattiasson-{:g}", alpha);
       auto metrics = std::vector<MetricSpec>{
-          error_metric("tip_w", "length", "vertical tip deflection (Mattiasson 1981 Table 1)", true),
-          error_metric("tip_u", "length", "horizontal tip displacement", true),
+          error_metric("tip_w", "L", "vertical tip deflection (Mattiasson 1981 Table 1)", true),
+          error_metric("tip_u", "L", "horizontal tip displacement", true),
           error_metric("tip_phi", "rad", "tip rotation", true),
           shape_error_metric(),
           kNewtonIterations};
@@ -512,7 +542,7 @@ void register_elastica_cases(Registry& registry) {
     }
     {
       auto metrics = std::vector<MetricSpec>{
-          error_metric("tip_position", "length", "|r(L)| vs the closed-circle value (0 for one turn)",
+          error_metric("tip_position", "L", "|r(L)| vs the closed-circle value (0 for one turn)",
                        false, std::nullopt),
           shape_error_metric(scheme == e2d::Scheme::Polygon ? std::optional<double>(2.0) : std::nullopt)};
       for (auto& m : noether_metrics(true, std::nullopt)) metrics.push_back(m);
