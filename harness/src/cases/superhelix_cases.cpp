@@ -93,11 +93,25 @@ using cases::noether3d_metric_specs;
 using cases::tilted_frame;
 using cases::value_sample;
 
-Parameter length_parameter(double value = 1.0) {
+Parameter length_parameter(double value) {
   return make_parameter("L", value, 0.0, 1e6, true, false, "length", "rod length");
 }
+// Units (issue 13, class 3). The roll-up, cantilever and curl cases run at L = 1.7 and EI = 2.3, not 1,
+// so that a solver mixing up L, EI or their powers is wrong by O(1), and report lengths over L (and H
+// relative to its scale): their results do not depend on L and EI, which are unit scales (case_info.hpp:
+// Parameter::unit_scale), so their measured bounds (measured at L = EI = 1) hold at any L and EI.
+constexpr double kDefaultLength = 1.7;
+constexpr double kDefaultStiffness = 2.3;
+Parameter unit_length_parameter() {
+  Parameter p = length_parameter(kDefaultLength);
+  p.unit_scale = true;
+  return p;
+}
 Parameter stiffness_parameter() {
-  return make_parameter("EI", 1.0, 0.0, 1e12, true, false, "force length^2", "bending stiffness (both axes)");
+  Parameter p = make_parameter("EI", kDefaultStiffness, 0.0, 1e12, true, false, "force length^2",
+                               "bending stiffness (both axes)");
+  p.unit_scale = true;
+  return p;
 }
 
 Case make_case(std::string name, std::string title, std::string physics, std::string reference,
@@ -249,8 +263,8 @@ LevelOutput rotated_clamp_tip_metrics(const RotatedClampCantilever& problem, con
   const Vec3 r = tip_position - problem.model.root_position;
   const Vec3 t = tip_frame.col(0);
   LevelOutput output;
-  output.metrics["tip_w"] = error_sample(-r.z(), problem.tip.w);
-  output.metrics["tip_u"] = error_sample(L - r.dot(t0), problem.tip.u);
+  output.metrics["tip_w"] = error_sample(-r.z() / L, problem.tip.w / L);
+  output.metrics["tip_u"] = error_sample((L - r.dot(t0)) / L, problem.tip.u / L);
   output.metrics["tip_phi"] = error_sample(std::atan2(-t.z(), t.dot(t0)), problem.tip.phi_L);
   output.metrics["out_of_plane"] = value_sample(std::abs(r.dot(Vec3::UnitZ().cross(t0))) / L);
   output.metrics["newton_iterations"] = diagnostic(double(iterations));
@@ -301,7 +315,7 @@ LevelOutput run_heavy(const Parameters& p, double level) {
   LevelOutput output;
   add_noether3d_metrics(output, solution, std::nullopt);
   output.metrics["newton_iterations"] = diagnostic(double(result.iterations));
-  output.metrics["tip_z"] = diagnostic(solution.vertex_position.back().z());
+  output.metrics["tip_z"] = diagnostic(solution.vertex_position.back().z() / model.length);
   return output;
 }
 
@@ -351,7 +365,7 @@ LevelOutput run_clothoid_heavy(const Parameters& p, double level) {
   const Vec3 tip = nodes.vertex_position.back() - model.root_position;
   output.metrics["tip_error"] = {tip.norm(), reference.norm(), (tip - reference).norm() / model.length};
   const char* component[3] = {"tip_x", "tip_y", "tip_z"};
-  for (int i = 0; i < 3; ++i) output.metrics[component[i]] = error_sample(tip[i], reference[i]);
+  for (int i = 0; i < 3; ++i) output.metrics[component[i]] = error_sample(tip[i] / model.length, reference[i] / model.length);
   output.metrics["newton_iterations"] = diagnostic(double(result.iterations));
   return output;
 }
@@ -639,7 +653,7 @@ void register_superhelix_cases(Registry& registry) {
         "cross-section (isotropic bending, GJ = 0.7 EI): a circle of radius EI/M.",
         "r(s) = r0 + (EI/M) sin(Ms/EI) t0 + (EI/M)(1 - cos(Ms/EI)) a x t0; H = M^2/(2EI)",
         "Exact circle under a pure end moment (Euler); ALGORITHMS.md §1.7; PHYSICS.md §3.4",
-        {length_parameter(), stiffness_parameter(),
+        {unit_length_parameter(), stiffness_parameter(),
          make_parameter("turns", 1.0, 0.0, 1.0, true, false, "", "M L / (2 pi EI)"),
          make_parameter("axis_angle_deg", 30.0, -180.0, 180.0, false, false, "deg",
                         "moment axis in the cross-section, from n1 towards n2")},
@@ -697,11 +711,11 @@ void register_superhelix_cases(Registry& registry) {
         "GJ = 0.8 EI) under a vertical dead tip load P: a planar elastica computed with all three strains.",
         "sqrt(alpha) = K(k) - F(psi0, k); tip displacements by incomplete elliptic integrals (planar reference)",
         "Bisshopp & Drucker 1945; Mattiasson 1981, IJNME 17:145-153; PHYSICS.md §3.5",
-        {length_parameter(), stiffness_parameter(),
+        {unit_length_parameter(), stiffness_parameter(),
          make_parameter("alpha", 2.0, 0.0, 20.0, true, false, "", "load parameter P L^2 / EI")},
         elements(levels, {8, 16, 32, 64, 128}),
-        {error_metric("tip_w", "length", "vertical tip deflection", 2.0, true),
-         error_metric("tip_u", "length", "horizontal tip displacement along the clamp tangent", 2.0, true),
+        {error_metric("tip_w", "L", "vertical tip deflection / L", 2.0, true),
+         error_metric("tip_u", "L", "horizontal tip displacement along the clamp tangent / L", 2.0, true),
          error_metric("tip_phi", "rad", "tip rotation below the horizontal", 2.0, true),
          {"out_of_plane", MetricKind::Error, "", "tip distance from the load plane / L", false, std::nullopt},
          diagnostic_metric("newton_iterations", "Newton iterations")},
@@ -724,11 +738,11 @@ void register_superhelix_cases(Registry& registry) {
         "(tangent yawed by 30 deg, cross-section rolled by 40 deg, GJ = 0.8 EI) under a vertical dead tip load P.",
         "sqrt(alpha) = K(k) - F(psi0, k); tip displacements by incomplete elliptic integrals (planar reference)",
         "Bisshopp & Drucker 1945; Mattiasson 1981, IJNME 17:145-153; Casati & Bertails-Descoubes 2013; PHYSICS.md §3.5",
-        {length_parameter(), stiffness_parameter(),
+        {unit_length_parameter(), stiffness_parameter(),
          make_parameter("alpha", 2.0, 0.0, 20.0, true, false, "", "load parameter P L^2 / EI")},
         elements(levels, {2, 4, 8, 16, 32}),
-        {error_metric("tip_w", "length", "vertical tip deflection", 4.0, true),
-         error_metric("tip_u", "length", "horizontal tip displacement along the clamp tangent", 4.0, true),
+        {error_metric("tip_w", "L", "vertical tip deflection / L", 4.0, true),
+         error_metric("tip_u", "L", "horizontal tip displacement along the clamp tangent / L", 4.0, true),
          error_metric("tip_phi", "rad", "tip rotation below the horizontal", 4.0, true),
          {"out_of_plane", MetricKind::Error, "", "tip distance from the load plane / L", false, std::nullopt},
          diagnostic_metric("newton_iterations", "Newton iterations")},
@@ -752,13 +766,13 @@ void register_superhelix_cases(Registry& registry) {
         "under gravity rho S g L^3/EI = weight: the Lagrangian has no explicit s, so H is conserved.",
         "H = n.v + m.u - W - V constant along s (V = -rho S g.r), compact and flattened forms equal",
         "Maddocks & Dichmann 1994, J. Elasticity 34:83; PHYSICS.md §1.1; seed slides 002",
-        {length_parameter(), stiffness_parameter(),
+        {unit_length_parameter(), stiffness_parameter(),
          make_parameter("weight", 3.0, 0.0, 50.0, true, false, "", "rho S g L^3 / EI")},
         elements(levels, {8, 16, 32, 64, 128}),
         [] {
           auto specs = noether3d_metric_specs(false, 2.0);
           specs.push_back(diagnostic_metric("newton_iterations", "Newton iterations"));
-          specs.push_back(diagnostic_metric("tip_z", "tip height"));
+          specs.push_back(diagnostic_metric("tip_z", "tip height / L"));
           return specs;
         }(),
         gates, run_heavy));
@@ -790,7 +804,7 @@ void register_superhelix_cases(Registry& registry) {
         "Super-Helix at N = 128, 256, 512 extrapolated (h^2, h^4), error ~1e-12 (weight = 3; otherwise N = 32, 64, "
         "one h^2 step, ~3e-9)",
         "Maddocks & Dichmann 1994, J. Elasticity 34:83; Casati & Bertails-Descoubes 2013; PHYSICS.md §1.1, §1.4",
-        {length_parameter(), stiffness_parameter(),
+        {unit_length_parameter(), stiffness_parameter(),
          make_parameter("weight", 3.0, 0.0, 50.0, true, false, "", "rho S g L^3 / EI")},
         elements(levels, {2, 4, 8, 16, 32}),
         {invariant_metric("H_spread", "max |H(s) - mean H| / term scale at the N + 1 nodes", 2.0),
@@ -798,8 +812,8 @@ void register_superhelix_cases(Registry& registry) {
          invariant_metric("H_form_difference", "max |H_compact - H_flattened| / term scale (round-off)"),
          diagnostic_metric("H_spread_midpoints", "the same at the element midpoints (O(h^2))"),
          error_metric("tip_error", "length", "|r(L) - r_ref(L)| / L vs the extrapolated Super-Helix", 4.0),
-         error_metric("tip_x", "length", "tip x - root x", 4.0), error_metric("tip_y", "length", "tip y - root y", 4.0),
-         error_metric("tip_z", "length", "tip z - root z", 4.0),
+         error_metric("tip_x", "L", "(tip x - root x) / L", 4.0), error_metric("tip_y", "L", "(tip y - root y) / L", 4.0),
+         error_metric("tip_z", "L", "(tip z - root z) / L", 4.0),
          diagnostic_metric("newton_iterations", "Newton iterations")},
         gates, run_clothoid_heavy);
     c.info.method =
@@ -944,7 +958,7 @@ void register_superhelix_cases(Registry& registry) {
         "Super-Helix with q = q0 (a tight twisted curl), no gravity, no end loads, released from rest: "
         "100 semi-implicit Euler steps alternating dense and recursive solves.",
         "q(t) = q0, qdot(t) = 0 exactly", "ALGORITHMS.md §1.7 (rest state)",
-        {length_parameter()}, elements({4, 8, 16}, {4, 8, 16, 32, 64}),
+        {unit_length_parameter()}, elements({4, 8, 16}, {4, 8, 16, 32, 64}),
         {{"max_drift", MetricKind::Error, "", "|q - q0|_inf + |qdot|_inf after 100 steps", false, std::nullopt}},
         {upper_bound_gate("max_drift", 1e-300, GateScope::AllLevels, "every force vanishes identically: exactly 0")},
         run_curl));
