@@ -77,7 +77,39 @@ Eigen::Matrix2d potential_hessian(const Potential& v, double px, double py) {
   return 0.5 * (hess + hess.transpose());
 }
 
-// q' = F(s, q) (shooting.hpp) and, for the extended state, S' = (dF/dq) S.
+// 1/EA, 1/GA: 0 for a rigid direction (the elastica, bit-identical to the unshearable equations).
+struct Compliance {
+  double axial = 0.0, shear = 0.0;
+  explicit Compliance(const Problem& problem)
+      : axial(std::isfinite(problem.axial_stiffness) ? 1.0 / problem.axial_stiffness : 0.0),
+        shear(std::isfinite(problem.shear_stiffness) ? 1.0 / problem.shear_stiffness : 0.0) {}
+  bool any() const { return axial != 0.0 || shear != 0.0; }
+};
+
+// The Reissner centreline tangent r' = (1 + a n.t) t + b (n.N) N (a = 1/EA, b = 1/GA; problem.hpp),
+// t = (c, sn), N = (-sn, c), and its derivatives with respect to theta, n_x and n_y.
+struct ReissnerTangent {
+  double x, y;                      // r'
+  double x_theta, y_theta;          // d r' / d theta
+  double x_nx, x_ny, y_nx, y_ny;    // d r' / d n
+};
+ReissnerTangent reissner_tangent(const Compliance& k, double c, double sn, double nx, double ny) {
+  const double nt = nx * c + ny * sn, nn = -nx * sn + ny * c;  // d nt/d theta = nn, d nn/d theta = -nt
+  const double stretch = 1.0 + k.axial * nt, shear = k.shear * nn;
+  ReissnerTangent r;
+  r.x = stretch * c - shear * sn;
+  r.y = stretch * sn + shear * c;
+  r.x_theta = k.axial * nn * c - stretch * sn + k.shear * nt * sn - shear * c;
+  r.y_theta = k.axial * nn * sn + stretch * c - k.shear * nt * c - shear * sn;
+  r.x_nx = k.axial * c * c + k.shear * sn * sn;
+  r.x_ny = (k.axial - k.shear) * sn * c;
+  r.y_nx = r.x_ny;
+  r.y_ny = k.axial * sn * sn + k.shear * c * c;
+  return r;
+}
+
+// q' = F(s, q) (shooting.hpp) and, for the extended state, S' = (dF/dq) S. With finite EA or GA
+// (problem.hpp): r' = (1 + n.t/EA) t + (n.N/GA) N and m' = -(r' x n).e_z = r'_y n_x - r'_x n_y.
 struct Rhs {
   const Problem* problem;
 
@@ -86,6 +118,11 @@ struct Rhs {
     const auto [ei, kh] = coefficients_at(*problem, s);
     const double c = std::cos(q[kTheta]), sn = std::sin(q[kTheta]);
     const Potential& v = problem->potential;
+    const Compliance compliance(*problem);
+    if (compliance.any()) {
+      reissner(q, dq, c, sn, ei, kh, compliance);
+      return;
+    }
     dq[kX] = c;
     dq[kY] = sn;
     dq[kTheta] = kh + q[kMoment] / ei;
@@ -105,6 +142,38 @@ struct Rhs {
         dsk[kY] = c * sk[kTheta];
         dsk[kTheta] = sk[kMoment] / ei;
         dsk[kMoment] = dm_dtheta * sk[kTheta] + sn * sk[kForceX] - c * sk[kForceY];
+        dsk[kForceX] = hess(0, 0) * sk[kX] + hess(0, 1) * sk[kY];
+        dsk[kForceY] = hess(1, 0) * sk[kX] + hess(1, 1) * sk[kY];
+      }
+    }
+  }
+
+  template <class State>
+  void reissner(const State& q, State& dq, double c, double sn, double ei, double kh, const Compliance& k) const {
+    const Potential& v = problem->potential;
+    const double nx = q[kForceX], ny = q[kForceY];
+    const ReissnerTangent r = reissner_tangent(k, c, sn, nx, ny);
+    dq[kX] = r.x;
+    dq[kY] = r.y;
+    dq[kTheta] = kh + q[kMoment] / ei;
+    dq[kMoment] = r.y * nx - r.x * ny;
+    Eigen::Vector2d grad = Eigen::Vector2d::Zero();
+    if (v.active()) grad = v.gradient(q[kX], q[kY]);
+    dq[kForceX] = grad.x();
+    dq[kForceY] = grad.y();
+    if constexpr (std::tuple_size_v<State> == kExtendedSize) {
+      Eigen::Matrix2d hess = Eigen::Matrix2d::Zero();
+      if (v.active()) hess = potential_hessian(v, q[kX], q[kY]);
+      const double m_theta = r.y_theta * nx - r.x_theta * ny;
+      const double m_nx = r.y + r.y_nx * nx - r.x_nx * ny;
+      const double m_ny = r.y_ny * nx - r.x - r.x_ny * ny;
+      for (std::size_t j = 0; j < kUnknowns; ++j) {
+        const double* sk = &q[kStateSize * (1 + j)];
+        double* dsk = &dq[kStateSize * (1 + j)];
+        dsk[kX] = r.x_theta * sk[kTheta] + r.x_nx * sk[kForceX] + r.x_ny * sk[kForceY];
+        dsk[kY] = r.y_theta * sk[kTheta] + r.y_nx * sk[kForceX] + r.y_ny * sk[kForceY];
+        dsk[kTheta] = sk[kMoment] / ei;
+        dsk[kMoment] = m_theta * sk[kTheta] + m_nx * sk[kForceX] + m_ny * sk[kForceY];
         dsk[kForceX] = hess(0, 0) * sk[kX] + hess(0, 1) * sk[kY];
         dsk[kForceY] = hess(1, 0) * sk[kX] + hess(1, 1) * sk[kY];
       }
@@ -276,7 +345,10 @@ PlanarRodSolution sample(const Problem& problem, const ShootingOptions& options,
     out.force_x.push_back(q[kForceX]);
     out.force_y.push_back(q[kForceY]);
     out.axial_force.push_back(q[kForceX] * c + q[kForceY] * sn);
+    out.shear_force.push_back(-q[kForceX] * sn + q[kForceY] * c);
   };
+  out.axial_stiffness = problem.axial_stiffness;
+  out.shear_stiffness = problem.shear_stiffness;
   Plain q = b.start_state;
   for (std::size_t k = 0; k < kUnknowns; ++k) q[b.unknown[k]] = z[Eigen::Index(k)] * b.scale[b.unknown[k]];
   record(0.0, q);

@@ -7,6 +7,10 @@
 //   x' = cos theta,  y' = sin theta,  theta' = kappa_hat(s) + m / EI(s),
 //   m' = n_x sin theta - n_y cos theta        (moment balance m' + (t x n).e_z = 0),
 //   n' = grad V(x, y)                         (force balance n' + f = 0, f = -grad V).
+// With a finite axial stiffness EA or shear stiffness GA (the planar Reissner rod, problem.hpp)
+// theta is the cross-section angle and x, y follow r' = (1 + n.t/EA) t + (n.N/GA) N, with the moment
+// balance m' = -(r' x n).e_z; the solution then carries axial_stiffness, shear_stiffness and the
+// shear force n.N, so that H includes the stretch and shear energy (invariants/planar_noether.hpp).
 // Ends (n(L) = end force at L, n(0) = -end force at 0, same for m; problem.hpp): every support
 // fixes exactly three of the six components at its end,
 //   Free    m, n_x, n_y = +-dead load;     Pinned  x, y, m;
