@@ -156,6 +156,10 @@ class PlotWriter:
         # Plain "1e-05" labels: the default mathtext labels cost a third of the run time.
         axis.set_major_formatter(self.ticker.LogFormatter())
         axis.set_minor_formatter(self.ticker.LogFormatter(labelOnlyBase=False))
+        # Minor ticks at 2 and 5 of each decade, not at 2 .. 9: every tick is a Python object with two
+        # marker lines, a grid line and two labels, and the eight per decade were a quarter of the CPU
+        # time of the plots (measured: 25.6 -> 19.0 s for the first 330 figures of the report).
+        axis.set_minor_locator(self.ticker.LogLocator(base=10.0, subs=(2.0, 5.0), numticks=12))
 
     def figure(self, title, xlabel, ylabel):
         # Fixed margins: constrained/tight layout would double the drawing time per figure.
