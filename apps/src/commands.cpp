@@ -121,6 +121,30 @@ void check_outputs(const std::optional<std::string>& json_path, const std::optio
                                           *csv_path));
 }
 
+// --shard I/K (1 <= I <= K): the selected cases whose position in the registry's order is I - 1
+// modulo K. Round robin, not contiguous blocks, so that each shard gets a share of every family
+// (the families differ in cost by orders of magnitude); the K shards partition the selection.
+std::vector<const Case*> shard_of(const std::vector<const Case*>& cases, const std::string& shard) {
+  const auto bad = [&](const std::string& why) {
+    return InputError("--shard", fmt::format("invalid --shard '{}': {}", shard, why));
+  };
+  const auto slash = shard.find('/');
+  if (slash == std::string::npos) throw bad("expected I/K, two whole numbers with 1 <= I <= K");
+  const auto whole = [&](const std::string& text) -> long {
+    if (text.empty() || text.size() > 6 || text.find_first_not_of("0123456789") != std::string::npos)
+      throw bad("expected I/K, two whole numbers with 1 <= I <= K <= 999999");
+    return std::stol(text);
+  };
+  const long index = whole(shard.substr(0, slash)), count = whole(shard.substr(slash + 1));
+  if (count < 1 || index < 1 || index > count) throw bad("expected 1 <= I <= K");
+  std::vector<const Case*> slice;
+  for (std::size_t i = 0; i < cases.size(); ++i)
+    if (long(i % std::size_t(count)) == index - 1) slice.push_back(cases[i]);
+  if (slice.empty())
+    throw bad(fmt::format("it selects no case: the selection has {} cases, fewer than K", cases.size()));
+  return slice;
+}
+
 }  // namespace
 
 int list_command(const std::vector<std::string>& patterns, bool verbose) {
@@ -143,7 +167,8 @@ int list_command(const std::vector<std::string>& patterns, bool verbose) {
 
 int run_command(const RunOptions& options) {
   check_outputs(options.json_path, options.csv_path);
-  const auto cases = harness::default_registry().select(options.common.cases);
+  auto cases = harness::default_registry().select(options.common.cases);
+  if (options.shard) cases = shard_of(cases, *options.shard);
   auto results = run_cases(cases, options.common, nullptr);
   fmt::print("{}", render_gate_table(results));
   const int code = exit_code(results);

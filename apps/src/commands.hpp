@@ -20,6 +20,7 @@ struct RunOptions {
   CommonOptions common;
   std::optional<std::string> json_path;
   std::optional<std::string> csv_path;
+  std::optional<std::string> shard;  // "I/K": the I-th of K deterministic slices of the selected cases
 };
 
 struct SweepOptions {

@@ -49,6 +49,9 @@ int main(int argc, char** argv) {
   run->add_flag("--extended", run_options.common.extended, "use the larger (extended) sweeps");
   run->add_option("--json", run_options.json_path, "also write the results as JSON (mergeable)");
   run->add_option("--csv", run_options.csv_path, "also write the results as CSV");
+  run->add_option("--shard", run_options.shard,
+                  "I/K: run only the I-th of K deterministic slices of the selected cases (round robin; "
+                  "the K shards partition them; merge their --json files with `report --from`)");
 
   SweepOptions sweep_options;
   sweep_options.common.cases.resize(1);
