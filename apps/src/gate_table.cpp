@@ -43,7 +43,7 @@ std::string render_level_table(const harness::SweepResult& result) {
   std::string out = fmt::format("{} ({} levels)\n{:>12}", result.info.name, result.levels.size(),
                                 result.info.resolution.name);
   for (const auto& metric : result.info.metrics) out += fmt::format(" {:>22}", metric.name);
-  out += fmt::format(" {:>10}\n", "wall [s]");
+  out += fmt::format(" {:>10} {:>10}\n", "wall [s]", "cpu [s]");
   for (const auto& level : result.levels) {
     out += fmt::format("{:>12.5g}", level.level);
     for (const auto& metric : result.info.metrics) {
@@ -56,7 +56,7 @@ std::string render_level_table(const harness::SweepResult& result) {
       out += fmt::format(" {:>22}", sample.error ? fmt::format("err {:.4e}", *sample.error)
                                                   : fmt::format("{:.6g}", sample.computed));
     }
-    out += fmt::format(" {:>10.4f}\n", level.wall_seconds);
+    out += fmt::format(" {:>10.4f} {:>10.4f}\n", level.wall_seconds, level.cpu_seconds);
   }
   for (const auto& analysis : result.analyses) {
     std::string pairwise;

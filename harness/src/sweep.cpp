@@ -1,6 +1,7 @@
 #include "rodvv/harness/sweep.hpp"
 
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <limits>
 #include <new>
@@ -129,6 +130,7 @@ SweepResult run_sweep(const Case& c, const Parameters& parameters, std::span<con
     level.level = levels[i];
     level.h = c.info.resolution.h(levels[i]);
     const auto start = Clock::now();
+    const std::clock_t cpu_start = std::clock();
     try {
       LevelOutput output = c.run_level(parameters, levels[i]);
       level.metrics = std::move(output.metrics);
@@ -140,6 +142,7 @@ SweepResult run_sweep(const Case& c, const Parameters& parameters, std::span<con
                       " (std::bad_alloc)";
     }
     level.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    level.cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
     if (progress)
       progress({c.info.name, c.info.resolution.name, i, levels.size(), level.level,
                 level.wall_seconds, level.failure.has_value()});

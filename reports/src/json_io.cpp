@@ -100,6 +100,7 @@ json to_json(const harness::LevelResult& level) {
   return json{{"level", number(level.level)},
               {"h", number(level.h)},
               {"wall_seconds", number(level.wall_seconds)},
+              {"cpu_seconds", number(level.cpu_seconds)},
               {"metrics", metrics},
               {"series", series},
               {"failure", string_or_null(level.failure)}};
@@ -380,6 +381,8 @@ harness::LevelResult read_level(const Reader& r, const json& j, const std::strin
   level.level = r.number(j, path, "level");
   level.h = r.number(j, path, "h");
   level.wall_seconds = r.number(j, path, "wall_seconds");
+  // Absent from files written before it was recorded: 0, "not measured" (the plots then use wall time).
+  level.cpu_seconds = j.contains("cpu_seconds") ? r.number(j, path, "cpu_seconds") : 0.0;
   const json& metrics = r.object(j, path, "metrics");
   const std::string metrics_path = Reader::child(path, "metrics");
   for (const auto& [name, value] : metrics.items()) {

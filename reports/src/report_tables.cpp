@@ -99,6 +99,7 @@ CaseTables case_tables(const harness::SweepResult& result) {
     t.levels.header.push_back(c.metric + (c.which == 0 ? " computed" : c.which == 1 ? " reference"
                                                                                     : " error"));
   t.levels.header.push_back("wall time");
+  t.levels.header.push_back("CPU time");
   if (any_failure) t.levels.header.push_back("failure");
   for (const auto& level : result.levels) {
     std::vector<TableCell> row = {num(format_shortest(level.level)),
@@ -115,6 +116,7 @@ CaseTables case_tables(const harness::SweepResult& result) {
                                        : format_error(s.error)));
     }
     row.push_back(num(format_seconds(level.wall_seconds)));
+    row.push_back(num(format_seconds(level.cpu_seconds)));
     if (any_failure)
       row.push_back(level.failure ? TableCell{*level.failure, CellStyle::Fail} : text(""));
     t.levels.rows.push_back(std::move(row));

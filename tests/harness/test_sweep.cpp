@@ -25,6 +25,18 @@ TEST(Sweep, FillsLevelsAnalysesAndRichardson) {
   EXPECT_FALSE(result.analyses[0].richardson.has_value());  // not marked extrapolable
 }
 
+// Each level records the process CPU time it took beside its wall time (a real case: thousands of
+// Stoermer-Verlet steps per level, well above the clock's resolution).
+TEST(Sweep, RecordsCpuTimePerLevel) {
+  const Case* c = default_registry().find("pendulum/long-time-energy/stormer-verlet");
+  ASSERT_NE(c, nullptr);
+  const SweepResult result = run_sweep(*c, c->info.parameters, c->info.resolution.default_levels);
+  for (const auto& level : result.levels) {
+    EXPECT_GT(level.cpu_seconds, 0.0);
+    EXPECT_LT(level.cpu_seconds, 10.0 * level.wall_seconds + 0.01);  // one thread: CPU ~ wall
+  }
+}
+
 TEST(Sweep, CountResolutionFitsInOneOverN) {
   Case c = synthetic_case(2.0);
   c.info.resolution = {"N", "elements", ResolutionScale::Count, {8, 16, 32}, {}};

@@ -79,6 +79,7 @@ harness::SweepResult symplectic_case() {
     level.level = dt;
     level.h = dt;
     level.wall_seconds = 0.01 / dt * 1e-3;
+    level.cpu_seconds = 0.009 / dt * 1e-3;
     const double err = 0.3 * dt * dt;
     level.metrics["period-error"] = {period + err, period, err};
     level.metrics["energy-drift"] = {1e-3 * dt * dt, 0.0, 1e-3 * dt * dt};
@@ -257,6 +258,7 @@ void expect_same(const harness::SweepResult& a, const harness::SweepResult& b) {
     expect_same(la.level, lb.level, "level");
     expect_same(la.h, lb.h, "h");
     expect_same(la.wall_seconds, lb.wall_seconds, "wall_seconds");
+    expect_same(la.cpu_seconds, lb.cpu_seconds, "cpu_seconds");
     EXPECT_EQ(la.failure, lb.failure);
     ASSERT_EQ(la.metrics.size(), lb.metrics.size());
     for (const auto& [name, sa] : la.metrics) {
@@ -498,6 +500,18 @@ TEST(ReportsJson, WrongSchemaVersionIsRejected) {
   EXPECT_NE(message.find("2"), std::string::npos) << message;
   j["schema_version"] = "1";
   EXPECT_NE(load_error(j).find("'schema_version': expected an integer"), std::string::npos);
+}
+
+// Files written before CPU time was recorded still read: their levels' cpu_seconds is 0 ("not
+// measured"), and the work-precision plots fall back to wall time.
+TEST(ReportsJson, LevelsWithoutCpuTimeReadAsZero) {
+  json j = to_json(synthetic_report());
+  for (auto& c : j["cases"])
+    for (auto& level : c["levels"]) level.erase("cpu_seconds");
+  const ValidationReport back = report_from_json(j, "memory");
+  ASSERT_FALSE(back.cases.empty());
+  ASSERT_FALSE(back.cases[0].levels.empty());
+  EXPECT_EQ(back.cases[0].levels[0].cpu_seconds, 0.0);
 }
 
 TEST(ReportsJson, MissingCasesIsRejected) {
