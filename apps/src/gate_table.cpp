@@ -58,6 +58,21 @@ std::string render_level_table(const harness::SweepResult& result) {
     }
     out += fmt::format(" {:>10.4f} {:>10.4f}\n", level.wall_seconds, level.cpu_seconds);
   }
+  // The values behind the errors at the finest level that ran: what the solver computed and what it
+  // was compared with, to 15 digits.
+  for (auto level = result.levels.rbegin(); level != result.levels.rend(); ++level) {
+    if (level->failure) continue;
+    out += fmt::format("  values at {} = {:g}:\n", result.info.resolution.name, level->level);
+    for (const auto& metric : result.info.metrics) {
+      const auto found = level->metrics.find(metric.name);
+      if (found == level->metrics.end()) continue;
+      const auto& sample = found->second;
+      out += sample.reference ? fmt::format("    {:<24} computed {:<24.15g} reference {:.15g}\n", metric.name,
+                                            sample.computed, *sample.reference)
+                              : fmt::format("    {:<24} computed {:.15g}\n", metric.name, sample.computed);
+    }
+    break;
+  }
   for (const auto& analysis : result.analyses) {
     std::string pairwise;
     for (double p : analysis.order.pairwise) pairwise += (std::isfinite(p) ? fmt::format(" {:.3f}", p) : " n/a");
