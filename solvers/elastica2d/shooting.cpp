@@ -77,13 +77,12 @@ Eigen::Matrix2d potential_hessian(const Potential& v, double px, double py) {
   return 0.5 * (hess + hess.transpose());
 }
 
-// 1/EA, 1/GA: 0 for a rigid direction (the elastica, bit-identical to the unshearable equations).
+// 1/EA, 1/GA: 0 for a rigid direction (the elastica).
 struct Compliance {
   double axial = 0.0, shear = 0.0;
   explicit Compliance(const Problem& problem)
       : axial(std::isfinite(problem.axial_stiffness) ? 1.0 / problem.axial_stiffness : 0.0),
         shear(std::isfinite(problem.shear_stiffness) ? 1.0 / problem.shear_stiffness : 0.0) {}
-  bool any() const { return axial != 0.0 || shear != 0.0; }
 };
 
 // The Reissner centreline tangent r' = (1 + a n.t) t + b (n.N) N (a = 1/EA, b = 1/GA; problem.hpp),
@@ -108,51 +107,21 @@ ReissnerTangent reissner_tangent(const Compliance& k, double c, double sn, doubl
   return r;
 }
 
-// q' = F(s, q) (shooting.hpp) and, for the extended state, S' = (dF/dq) S. With finite EA or GA
-// (problem.hpp): r' = (1 + n.t/EA) t + (n.N/GA) N and m' = -(r' x n).e_z = r'_y n_x - r'_x n_y.
+// q' = F(s, q) (shooting.hpp) and, for the extended state, S' = (dF/dq) S: r' from reissner_tangent
+// (for the elastica, 1/EA = 1/GA = 0 and r' = t) and m' = -(r' x n).e_z = r'_y n_x - r'_x n_y.
 struct Rhs {
   const Problem* problem;
+  Compliance compliance;
+
+  explicit Rhs(const Problem& p) : problem(&p), compliance(p) {}
 
   template <class State>
   void operator()(const State& q, State& dq, double s) const {
     const auto [ei, kh] = coefficients_at(*problem, s);
     const double c = std::cos(q[kTheta]), sn = std::sin(q[kTheta]);
     const Potential& v = problem->potential;
-    const Compliance compliance(*problem);
-    if (compliance.any()) {
-      reissner(q, dq, c, sn, ei, kh, compliance);
-      return;
-    }
-    dq[kX] = c;
-    dq[kY] = sn;
-    dq[kTheta] = kh + q[kMoment] / ei;
-    dq[kMoment] = q[kForceX] * sn - q[kForceY] * c;
-    Eigen::Vector2d grad = Eigen::Vector2d::Zero();
-    if (v.active()) grad = v.gradient(q[kX], q[kY]);
-    dq[kForceX] = grad.x();
-    dq[kForceY] = grad.y();
-    if constexpr (std::tuple_size_v<State> == kExtendedSize) {
-      Eigen::Matrix2d hess = Eigen::Matrix2d::Zero();
-      if (v.active()) hess = potential_hessian(v, q[kX], q[kY]);
-      const double dm_dtheta = q[kForceX] * c + q[kForceY] * sn;  // d/dtheta of n_x sin - n_y cos
-      for (std::size_t k = 0; k < kUnknowns; ++k) {
-        const double* sk = &q[kStateSize * (1 + k)];
-        double* dsk = &dq[kStateSize * (1 + k)];
-        dsk[kX] = -sn * sk[kTheta];
-        dsk[kY] = c * sk[kTheta];
-        dsk[kTheta] = sk[kMoment] / ei;
-        dsk[kMoment] = dm_dtheta * sk[kTheta] + sn * sk[kForceX] - c * sk[kForceY];
-        dsk[kForceX] = hess(0, 0) * sk[kX] + hess(0, 1) * sk[kY];
-        dsk[kForceY] = hess(1, 0) * sk[kX] + hess(1, 1) * sk[kY];
-      }
-    }
-  }
-
-  template <class State>
-  void reissner(const State& q, State& dq, double c, double sn, double ei, double kh, const Compliance& k) const {
-    const Potential& v = problem->potential;
     const double nx = q[kForceX], ny = q[kForceY];
-    const ReissnerTangent r = reissner_tangent(k, c, sn, nx, ny);
+    const ReissnerTangent r = reissner_tangent(compliance, c, sn, nx, ny);
     dq[kX] = r.x;
     dq[kY] = r.y;
     dq[kTheta] = kh + q[kMoment] / ei;
@@ -190,7 +159,7 @@ void integrate(const Problem& problem, const ShootingOptions& options, State& q,
   using Checker = typename odeint::controlled_runge_kutta<ErrorStepper>::error_checker_type;
   odeint::controlled_runge_kutta<ErrorStepper> stepper(
       Checker(options.ode_abs_tolerance, options.ode_rel_tolerance));
-  const Rhs rhs{&problem};
+  const Rhs rhs(problem);
   const double min_step = 1e-14 * problem.length;
   double s = 0.0;
   double ds = problem.length / 16.0;  // the controller shrinks it at once if needed
