@@ -5,6 +5,7 @@
 
 namespace rodvv::harness::knot_cases {
 
-void add_trefoil_nodal(Registry& registry);  // open trefoil pulled by a dead load, nodal 3-D rod
+void add_trefoil_nodal(Registry& registry);     // open trefoil pulled by a dead load, nodal 3-D rod
+void add_plectoneme_nodal(Registry& registry);  // plectoneme with a free end loop, both ends clamped, nodal 3-D rod
 
 }  // namespace rodvv::harness::knot_cases

@@ -3,6 +3,9 @@
 
 namespace rodvv::harness {
 
-void register_knot_cases(Registry& registry) { knot_cases::add_trefoil_nodal(registry); }
+void register_knot_cases(Registry& registry) {
+  knot_cases::add_trefoil_nodal(registry);
+  knot_cases::add_plectoneme_nodal(registry);
+}
 
 }  // namespace rodvv::harness

@@ -78,25 +78,7 @@ TiedRod tie_braid_closure(const BraidClosure& knot, std::size_t elements) {
   require_positive("tail_length", knot.tail_length);
   require_at_least("elements", elements, 3);
 
-  const std::vector<Vec3> curve = dense_curve(knot);
-  std::vector<double> arclength(curve.size(), 0.0);
-  for (std::size_t i = 1; i < curve.size(); ++i) arclength[i] = arclength[i - 1] + (curve[i] - curve[i - 1]).norm();
-  TiedRod rod;
-  rod.length = arclength.back();
-  const double ebar = rod.length / (double(elements) - 0.5);
-  const Vec3 root_direction = (curve[1] - curve[0]).normalized();
-  std::size_t j = 0;
-  for (std::size_t i = 0; i <= elements; ++i) {
-    const double s = (double(i) - 0.5) * ebar;
-    if (s <= 0.0) {  // the ghost vertex, on the root tail's line
-      rod.vertices.push_back(curve.front() + s * root_direction);
-      continue;
-    }
-    while (j + 2 < curve.size() && arclength[j + 1] < s) ++j;
-    const double u = std::min(1.0, (s - arclength[j]) / (arclength[j + 1] - arclength[j]));
-    rod.vertices.push_back(curve[j] + u * (curve[j + 1] - curve[j]));
-  }
-  return rod;
+  return rod_on_curve(dense_curve(knot), elements, false);
 }
 
 PulledKnot pull_tied_rod(const TiedRod& tied, double B, double C, double T, const solvers::rod3d::SelfContact& contact) {

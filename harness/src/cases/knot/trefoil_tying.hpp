@@ -10,16 +10,14 @@
 // undo by a Reidemeister I move, so the knot type is the braid closure's: a trefoil for 3 half
 // twists, the unknot for 1). The curve is then turned by pi about z so that it starts at -x.
 //
-// The rod's vertices are placed on this curve at equal arclength steps ebar = L / (N - 1/2) for a
-// clamped root (vertex i at arclength (i - 1/2) ebar, the ghost vertex on the straight root tail;
-// solvers/rod3d/model.hpp), L the curve's length; the edges are chords, a little shorter than ebar
-// where the curve bends, which the first Newton steps of the statics correct.
+// The rod's vertices are placed on this curve by rod_on_curve (a clamped root, a free tip).
 #include <cstddef>
 #include <vector>
 
 #include "rodvv/common/eigen_types.hpp"
 #include "rodvv/solvers/rod3d/model.hpp"
 #include "rodvv/solvers/rod3d/state.hpp"
+#include "rod_on_curve.hpp"
 
 namespace rodvv::harness::knot_cases {
 
@@ -30,11 +28,6 @@ struct BraidClosure {
   double loop_radius = 0.0;        // radius of the closing arcs' ends
   double tail_offset = 0.0;        // the tails pass this far above and below the arcs' plane
   double tail_length = 0.0;        // each tail's length
-};
-
-struct TiedRod {
-  double length = 0.0;          // L, the arclength of the whole curve
-  std::vector<Vec3> vertices;   // N + 1 vertices, the root's ghost vertex first
 };
 
 // InputError unless every length is finite and > 0 and half_twists is odd and >= 1, elements >= 3.

@@ -1,0 +1,211 @@
+// knot/plectoneme-nodal: a plectoneme (PHYSICS.md §5.2) in an inextensible, isotropic rod (bending
+// B, twisting C != B) with frictionless self-contact: two strands wound into a ply with a free end
+// loop, the ply held by the twist, the tails pulled straight by the tension T_ext that this twist
+// and the ply's geometry call for. The nodal 3-D rod (solvers/rod3d) with the smooth barrier of
+// solvers/rod3d/self_contact.hpp. Laid out near its equilibrium and relaxed with both ends clamped
+// (plectoneme_tying.hpp says why not by twisting a straight rod), so that T_ext and the twisting
+// moment M_t are reactions the case measures on the tails.
+//
+// Checks, with nothing special-cased in the contact region:
+//  - the Noether quantity H (PHYSICS.md §1.2; V_eff of the barrier included, solvers/rod3d/solution.cpp)
+//    equal on the tails (H = T_ext + M_t^2 / 2C there) and through the ply: max_s |H(s) - H_tail| / T_ext;
+//  - the ply's laws for a free end loop (references/knot_and_ply.hpp, Coleman & Swigon 2004) at the
+//    measured R and theta, in the middle of the ply: the tail tension T_ext R^2 / B =
+//    1/2 sin^4 theta (1 + 2 / cos 2 theta), the twisting moment |M_t| = B sin^2 theta sin 2 theta /
+//    (R cos 2 theta), the contact force per length p and the strand tension n_t; and, free of the
+//    measured theta (which the tension law amplifies: d ln T / d theta ~ 4 / theta), T_ext against
+//    the law at the theta for which the M_t law gives the measured M_t.
+// Measured in the middle of the ply: the contact pairs between the two strands, the quarter of them
+// nearest the loop and the quarter nearest the tails' junction excluded (the ply is uniform only away
+// from both). Per segment of the root's strand, its closest pair gives R = d / 2 and theta =
+// 1/2 acos(-t1.t2) (the strands' tangents, both along s, cross at 2 theta at a contact).
+//
+// Scales: the layout and the barrier are in units of the rod's radius h: R = h, a ply 60 h long with a
+// helix angle theta_0 (`helix_angle`), tails 20 h, the junction arcs 4 h, the end loop 8 h high with a
+// bulge of 2 h; the twist rate M_t(theta_0, h) / C; the barrier k = barrier T_0 / h^2 with T_0 the tension
+// law at theta_0 and h. The problem is then the same, up to units, for every B and h at a fixed C/B.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "../case_builder.hpp"
+#include "knot_cases.hpp"
+#include "plectoneme_tying.hpp"
+#include "rodvv/common/errors.hpp"
+#include "rodvv/invariants/noether3d.hpp"
+#include "rodvv/references/knot_and_ply.hpp"
+#include "rodvv/solvers/rod3d/self_contact.hpp"
+#include "rodvv/solvers/rod3d/solution.hpp"
+#include "rodvv/solvers/rod3d/state.hpp"
+#include "rodvv/solvers/rod3d/statics.hpp"
+
+namespace rodvv::harness::knot_cases {
+
+namespace {
+
+namespace rod = solvers::rod3d;
+namespace ref = references;
+using namespace cases;
+
+constexpr double kPi = std::numbers::pi;
+
+const char* const kMethod =
+    "discrete elastic rod (Bergou et al. 2008) with a C^2 self-contact barrier (k/3)(2h - d)^3 between "
+    "non-adjacent segments (sort-and-sweep broad phase); statics by Newton with exact derivatives, sparse LU, "
+    "pseudo-transient continuation (Kelley & Keyes 1998)";
+
+struct Ply {
+  double B, C, h, theta0, barrier;
+};
+
+Ply ply_of(const Parameters& p) {
+  return {parameter_value(p, "B"), parameter_value(p, "C"), parameter_value(p, "radius"),
+          parameter_value(p, "helix_angle") * kPi / 180.0, parameter_value(p, "barrier")};
+}
+
+// The plectoneme's laws (a left-handed ply: M_t > 0) at R and theta.
+ref::PlectonemeSolution law(double B, double R, double theta) { return ref::plectoneme({B, R, theta, 0.0, 0.0}); }
+
+// The theta in (0, pi/4) at which the law's |M_t| equals `moment` (bisection: |M_t| grows from 0 to
+// infinity on it).
+double theta_of_moment(double B, double R, double moment) {
+  double lo = 1e-9, hi = 0.25 * kPi - 1e-12;
+  for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (std::abs(law(B, R, mid).ply.twisting_moment) < moment ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+LevelOutput run(const Parameters& p, double level) {
+  const std::size_t n = element_count(level);
+  const Ply k = ply_of(p);
+  const ref::PlectonemeSolution laid_law = law(k.B, k.h, k.theta0);
+  const double twist_rate = std::abs(laid_law.ply.twisting_moment) / k.C;
+  const PlyLayout layout{k.h, k.theta0, 60.0 * k.h, 4.0 * k.h, 8.0 * k.h, 2.0 * k.h, 20.0 * k.h, twist_rate};
+  const TiedRod laid = lay_plectoneme(layout, n);
+  const ClampedPly clamped =
+      clamp_laid_rod(laid, twist_rate, k.B, k.C, {k.h, k.barrier * laid_law.tail_tension / (k.h * k.h)});
+  const rod::RodModel& model = clamped.model;
+
+  rod::StaticOptions options;
+  options.pseudo_transient = true;
+  options.max_iterations = 200 * n;
+  options.tolerance = 1e-9;
+  const auto result = rod::solve_static(model, clamped.start, options);
+
+  const auto solution = rod::make_solution(model, result.state);
+  const double ebar = rod::rest_edge_length(model);
+  const auto contacts = rod::self_contacts(model.self_contact, result.state.position, ebar);
+  if (contacts.empty())
+    throw SolverError(kMethod, "the ply came undone: no self-contact at equilibrium", result.iterations,
+                      result.residual);
+
+  // The tails: the stations at the middle of the root's tail (s = 10 h).
+  std::size_t tail = 0;
+  for (std::size_t i = 0; i < solution.s.size(); ++i)
+    if (std::abs(solution.s[i] - 10.0 * k.h) < std::abs(solution.s[tail] - 10.0 * k.h)) tail = i;
+  const Vec3 t_tail = solution.frame[tail].col(0);
+  const double T_ext = solution.force_n[tail].dot(t_tail);
+  const double M_t = solution.moment_m[tail].dot(t_tail);
+  const auto flattened = invariants::noether3d_flattened(solution);
+  const double H_tail = flattened[tail];
+  double deviation = 0.0;
+  for (double H : flattened) deviation = std::max(deviation, std::abs(H - H_tail) / T_ext);
+
+  // The middle of the ply: the root strand's segments first .. of the pairs, the outer quarters dropped.
+  std::size_t lo = contacts.front().first, hi = contacts.front().first;
+  for (const auto& c : contacts) lo = std::min(lo, c.first), hi = std::max(hi, c.first);
+  const std::size_t from = lo + (hi - lo) / 4, to = hi - (hi - lo) / 4;
+  const auto tangent = [&](std::size_t j) { return (result.state.position[j + 1] - result.state.position[j]).normalized(); };
+  double R_sum = 0.0, theta_sum = 0.0, force_sum = 0.0;
+  std::size_t segments = 0;
+  for (std::size_t j = from; j <= to; ++j) {
+    const rod::ContactPair* closest = nullptr;
+    for (const auto& c : contacts)
+      if (c.first == j) {
+        force_sum += c.force;
+        if (!closest || c.distance < closest->distance) closest = &c;
+      }
+    if (!closest) continue;
+    R_sum += 0.5 * closest->distance;
+    theta_sum += 0.5 * std::acos(std::clamp(-tangent(j).dot(tangent(closest->second)), -1.0, 1.0));
+    ++segments;
+  }
+  if (segments < 3)
+    throw SolverError(kMethod, "no uniform ply: " + std::to_string(segments) + " strand segments in contact in its middle",
+                      result.iterations, result.residual);
+  const double R = R_sum / double(segments), theta = theta_sum / double(segments);
+  const double p_measured = force_sum / (double(to - from + 1) * ebar);
+  double strand_tension = 0.0;
+  std::size_t strand_stations = 0;
+  for (std::size_t i = 0; i < solution.s.size(); ++i) {
+    const double vertex = solution.s[i] / ebar + 0.5;  // the station's vertex index (clamped root)
+    if (vertex < double(from) + 1.0 || vertex > double(to)) continue;
+    strand_tension += solution.force_n[i].dot(solution.frame[i].col(0));
+    ++strand_stations;
+  }
+  strand_tension /= double(std::max<std::size_t>(strand_stations, 1));
+  const ref::PlectonemeSolution at = law(k.B, R, theta);
+  const double theta_moment = theta_of_moment(k.B, R, std::abs(M_t));
+  const double T_from_moment = law(k.B, R, theta_moment).tail_tension;
+
+  LevelOutput output;
+  output.metrics["H_deviation"] = value_sample(deviation);
+  output.metrics["tension_law"] = value_sample(T_ext / at.tail_tension - 1.0);
+  output.metrics["tension_from_moment"] = value_sample(T_ext / T_from_moment - 1.0);
+  output.metrics["moment_law"] = value_sample(std::abs(M_t) / std::abs(at.ply.twisting_moment) - 1.0);
+  output.metrics["contact_force_law"] = value_sample(p_measured / at.ply.contact_force - 1.0);
+  output.metrics["strand_tension_law"] = value_sample(strand_tension / at.ply.tension - 1.0);
+  output.metrics["helix_angle"] = diagnostic(theta * 180.0 / kPi);
+  output.metrics["helix_angle_from_moment"] = diagnostic(theta_moment * 180.0 / kPi);
+  output.metrics["ply_radius"] = diagnostic(R / k.h);
+  output.metrics["tail_tension"] = diagnostic(T_ext);
+  output.metrics["twisting_moment"] = diagnostic(M_t);
+  add_noether3d_metrics(output, solution, std::nullopt);
+  output.metrics["contact_pairs"] = diagnostic(double(contacts.size()));
+  output.metrics["iterations"] = diagnostic(double(result.iterations));
+  output.metrics["equilibrium_residual"] = diagnostic(result.residual);
+  return output;
+}
+
+}  // namespace
+
+void add_plectoneme_nodal(Registry& registry) {
+  std::vector<MetricSpec> metrics{
+      invariant_metric("H_deviation", "max_s |H(s) - H_tail| / T_ext through the ply, V_eff of the barrier included", 1.0),
+      invariant_metric("tension_law", "T_ext / T_law(R, theta) - 1 at the measured R and theta"),
+      invariant_metric("tension_from_moment", "T_ext / T_law(R, theta(M_t)) - 1, theta from the measured M_t"),
+      invariant_metric("moment_law", "|M_t| / M_t,law(R, theta) - 1"),
+      invariant_metric("contact_force_law", "p / p_law(R, theta) - 1, p the contact force per strand length"),
+      invariant_metric("strand_tension_law", "n_t / n_t,law(R, theta) - 1 on the strands in the ply's middle")};
+  for (auto& spec : noether3d_metric_specs(false, std::nullopt)) metrics.push_back(std::move(spec));
+  metrics.push_back(diagnostic_metric("helix_angle", "theta in the ply's middle (degrees)"));
+  metrics.push_back(diagnostic_metric("helix_angle_from_moment", "theta at which the M_t law gives the measured M_t (degrees)"));
+  metrics.push_back(diagnostic_metric("ply_radius", "R / h in the ply's middle"));
+  metrics.push_back(diagnostic_metric("tail_tension", "T_ext, n.t on the root's tail"));
+  metrics.push_back(diagnostic_metric("twisting_moment", "M_t, m.t on the root's tail"));
+  metrics.push_back(diagnostic_metric("contact_pairs", "segment pairs closer than 2h at equilibrium"));
+  metrics.push_back(diagnostic_metric("iterations", "Newton iterations of the pseudo-transient relaxation"));
+  metrics.push_back(diagnostic_metric("equilibrium_residual", "final scaled residual"));
+  std::vector<GateSpec> gates{};
+  Case c = make_case(
+      "knot",
+      {"knot/plectoneme-nodal", "Plectoneme: H through the ply and the ply's tension law (nodal rod)",
+       "Inextensible isotropic rod (B, C) with frictionless self-contact (barrier) of radius h, laid as a two-strand "
+       "ply with a free end loop and twisted, both ends clamped, relaxed to equilibrium.",
+       "H(s) = H_tail through the ply (Noether, frictionless contact); T_ext R^2/B = 1/2 sin^4 theta (1 + 2/cos 2 "
+       "theta) and the ply's M_t, p, n_t (PHYSICS.md §5.2)",
+       "Coleman & Swigon 2004 (Phil. Trans. R. Soc. A 362:1281); PHYSICS.md §1.2, §5.2", kMethod},
+      {make_parameter("B", 1.3, 0.0, 1e12, true, false, "force length^2", "bending stiffness EI1 = EI2"),
+       make_parameter("C", 0.9, 0.0, 1e12, true, false, "force length^2", "twisting stiffness GJ"),
+       make_parameter("radius", 0.05, 0.0, 1e6, true, false, "length", "rod radius h (contact at distance 2h)"),
+       make_parameter("helix_angle", 15.0, 8.0, 35.0, false, false, "degrees", "helix angle of the laid ply"),
+       make_parameter("barrier", 500.0, 50.0, 5000.0, false, false, "", "barrier stiffness k h^2 / T_0")},
+      element_levels("number of edges", {100, 200, 400}, {100, 200, 400, 800}), std::move(metrics), std::move(gates),
+      run);
+  registry.add(std::move(c));
+}
+
+}  // namespace rodvv::harness::knot_cases
