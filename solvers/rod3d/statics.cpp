@@ -288,6 +288,7 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
     VecX dz = -solve(r);
     if (!dz.allFinite()) return outcome;
     bool capped = false;
+    double cap_ratio = 1.0;  // the capped step's length over the Newton step's
     if (contact) {
       // No vertex moves more than h/2 in one step: two segments at least ~2h apart cannot pass through
       // each other within a step, which the barrier (seen only at the end points of the step) could
@@ -298,7 +299,10 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
         largest = std::max(largest, dz.segment<3>(Eigen::Index(layout.vertex(i))).norm());
       const double limit = 0.5 * model.self_contact.radius;
       capped = largest > limit;
-      if (capped) dz *= limit / largest;
+      if (capped) {
+        cap_ratio = limit / largest;
+        dz *= cap_ratio;
+      }
     }
     ++outcome.iterations;
     if (at_floor) {
@@ -316,7 +320,12 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
       auto trial = try_step(model, state, dz, lambda, held);
       if (trial && trial->measure <= 10.0 * outcome.residual) {
         const bool progress = !capped && trial->measure < outcome.residual;
-        const double growth = progress ? std::clamp(outcome.residual / trial->measure, 1.2, 10.0) : 1.0;
+        // A capped step is not the pseudo-time step tau asked for but a fraction of it: tau shrinks by
+        // that fraction (at most 10x per step), so that the next step is about as long as the cap allows
+        // and the iterate follows the pseudo-time path instead of jumping along a soft mode (a ply
+        // unwinding through its end loop did, at N = 200).
+        const double growth =
+            progress ? std::clamp(outcome.residual / trial->measure, 1.2, 10.0) : (capped ? std::max(0.1, cap_ratio) : 1.0);
         state = std::move(trial->state);
         pseudo_time = std::min(kMaxPseudoTime, pseudo_time * growth);
       } else {

@@ -68,20 +68,21 @@ TiedRod lay_plectoneme(const PlyLayout& ply, std::size_t elements) {
   require_positive("loop_height", ply.loop_height);
   require_non_negative("loop_bulge", ply.loop_bulge);
   require_positive("tail_length", ply.tail_length);
-  require_finite("twist_rate", ply.twist_rate);
   return rod_on_curve(dense_curve(ply), elements, true);
 }
 
-ClampedPly clamp_laid_rod(const TiedRod& laid, double twist_rate, double B, double C,
-                          const solvers::rod3d::SelfContact& contact) {
+PulledPly pull_laid_ply(const TiedRod& laid, double twist_rate, double B, double C, double tension,
+                        const solvers::rod3d::SelfContact& contact) {
   namespace rod = solvers::rod3d;
-  ClampedPly ply;
+  require_finite("twist_rate", twist_rate);
+  PulledPly ply;
   rod::RodModel& model = ply.model;
   model.elements = laid.vertices.size() - 1;
   model.length = laid.length;
   model.stiffness = Vec3(C, B, B);
   model.twist_inertia = 0.0;
   model.self_contact = contact;
+  model.end_force = Vec3(tension, 0.0, 0.0);
   // Material angle of edge j: the twist accumulated up to its midpoint, at arclength j ebar.
   const double ebar = rod::rest_edge_length(model);
   std::vector<double> angles(model.elements);
@@ -92,6 +93,7 @@ ClampedPly clamp_laid_rod(const TiedRod& laid, double twist_rate, double B, doub
   model.root.position = 0.5 * (laid.vertices[0] + laid.vertices[1]);
   model.root.frame = rod::material_frame(ply.start, 0);
   model.tip.support = rod::EndSupport::Clamped;
+  model.tip.slides = true;
   model.tip.position = 0.5 * (laid.vertices[n - 1] + laid.vertices[n]);
   model.tip.frame = rod::material_frame(ply.start, n - 1);
   return ply;

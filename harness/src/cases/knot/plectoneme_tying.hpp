@@ -2,11 +2,10 @@
 // How rodvv lays a plectoneme in a rod before relaxing it (knot/plectoneme-nodal).
 //
 // Twisting a straight rod under tension by continuation of its end rotation until a ply forms was
-// tried first (issue 12's notes): the twist-buckling branch is followed, but the ply then grows by
-// sliding rod out of the tails through the contact, thousands of pseudo-transient iterations at
-// N = 100, and under displacement control the h/2 step limit of the contact statics caps every
-// step. Instead the ply is laid out directly, near its equilibrium, and relaxed with both ends
-// clamped where the layout puts them (the tension is then a reaction, measured on the tails):
+// tried first: the twist-buckling branch is followed, but the ply then grows by sliding rod out of
+// the tails through the contact (thousands of pseudo-transient iterations at N = 100), and under
+// displacement control the h/2 step limit of the contact statics caps every step. Instead the ply is
+// laid out directly, near its equilibrium, and relaxed under its end loads:
 //
 //  - the tails lie on the x-axis, the root's on x < 0, the tip's on x > 0, each `tail_length` long;
 //  - quarter circles of radius `junction_radius` in the plane z = 0 turn them into the two strands
@@ -20,8 +19,8 @@
 //    strand 2's end to strand 1's: X = R cos psi + W sin psi sin 2 psi across, Y = H_l sin psi up,
 //    psi from pi to 0 (H_l = `loop_height`, W = `loop_bulge`: the loop is wider than the ply, as a
 //    plectoneme's end loop is);
-//  - the material frames twisted uniformly at the rate `twist_rate` (rad per length) from the
-//    space-parallel transport of the root's director e_z along the rod.
+//  - (pull_laid_ply) the material frames twisted uniformly at a given rate from the space-parallel
+//    transport of the root's director e_z along the rod.
 //
 // The rod's vertices are placed on this curve by rod_on_curve (both ends clamped).
 #include <cstddef>
@@ -40,21 +39,23 @@ struct PlyLayout {
   double loop_height = 0.0;      // > 0
   double loop_bulge = 0.0;       // >= 0
   double tail_length = 0.0;      // > 0
-  double twist_rate = 0.0;       // finite
 };
 
 // InputError naming the field unless every length is finite and positive (loop_bulge >= 0), the helix
-// angle in (0, pi/4), the twist rate finite, elements >= 3.
+// angle in (0, pi/4), elements >= 3.
 TiedRod lay_plectoneme(const PlyLayout& ply, std::size_t elements);
 
 // The laid rod as knot/plectoneme-nodal relaxes it: inextensible, bending B about both axes, twisting
-// C, both ends clamped where the layout puts them (root: t = e_x; tip: t = e_x, its material frame
-// turned by the twist accumulated along the rod), self-contact `contact`, no loads.
-struct ClampedPly {
+// C, its material frames turned by `twist_rate` (rad per length, InputError unless finite) along it;
+// the root clamped on its tail (t = e_x); the tip clamped with its twisted frame but sliding along its
+// tail (the x-axis) under the dead pull `tension` e_x (solvers/rod3d/model.hpp: EndCondition::slides,
+// a rod held at constant tension and link, as in magnetic tweezers), so that the ply's length and helix
+// angle find the equilibrium of that tension; self-contact `contact`.
+struct PulledPly {
   solvers::rod3d::RodModel model;
   solvers::rod3d::RodState start;
 };
-ClampedPly clamp_laid_rod(const TiedRod& laid, double twist_rate, double B, double C,
-                          const solvers::rod3d::SelfContact& contact);
+PulledPly pull_laid_ply(const TiedRod& laid, double twist_rate, double B, double C, double tension,
+                        const solvers::rod3d::SelfContact& contact);
 
 }  // namespace rodvv::harness::knot_cases
