@@ -1,15 +1,18 @@
 // The knot cases pass at their default levels; their gates turn red on a wrong claim or an inconsistent
 // H; the tying procedure ties what it says (a trefoil holds together under the pull, the same closure
-// with one half twist - the unknot - comes undone and pulls straight).
+// with one half twist - the unknot - comes undone and pulls straight; a laid ply sits on its curve, and
+// its gates tell the plectoneme's tension law from a wrong one and a wrong stiffness).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "../../harness/src/cases/knot/plectoneme_tying.hpp"
 #include "../../harness/src/cases/knot/trefoil_tying.hpp"
 #include "case_test_support.hpp"
 #include "rodvv/common/errors.hpp"
+#include "rodvv/references/knot_and_ply.hpp"
 #include "rodvv/solvers/rod3d/self_contact.hpp"
 #include "rodvv/solvers/rod3d/state.hpp"
 #include "rodvv/solvers/rod3d/statics.hpp"
@@ -29,7 +32,7 @@ TEST(KnotCases, TrefoilPassesAtDefaultLevels) {
   const auto result = run_at_default_levels(named("knot/trefoil-nodal"));
   EXPECT_TRUE(result.passed()) << failing_gates(result);
   EXPECT_FALSE(result.gates.empty());
-  EXPECT_EQ(rodvv::testing::case_names_of_family("knot").size(), 1u);
+  EXPECT_EQ(rodvv::testing::case_names_of_family("knot").size(), 5u);
 }
 
 // Claimed at second order, the first-order H error fails its order gate; an error three times larger
@@ -93,4 +96,67 @@ TEST(KnotTying, TrefoilHoldsAndTheUnknotComesUndone) {
   }
 }
 
+// ---- the plectoneme ------------------------------------------------------------------------------
+
+TEST(PlyLaying, VerticesSitOnTheLaidCurveAndTheEndsAreHeldAsDocumented) {
+  const double h = 0.05, theta = 15.0 * 3.14159265358979 / 180.0;
+  const knot::TiedRod laid = knot::lay_plectoneme({h, theta, 120 * h, 4 * h, 8 * h, 2 * h, 40 * h}, 400);
+  const knot::PulledPly p = knot::pull_laid_ply(laid, 1.1, 1.3, 0.9, 3.9, {h, 500 * 3.9 / (h * h)});
+  const double ebar = rod::rest_edge_length(p.model);
+  for (std::size_t j = 0; j < p.model.elements; ++j) {
+    const double chord = (p.start.position[j + 1] - p.start.position[j]).norm();
+    EXPECT_LE(chord, ebar * (1 + 1e-12)) << j;
+    EXPECT_GE(chord, 0.9 * ebar) << j;  // the tightest bend, the junction arcs (radius 4 h): >= 0.99 ebar
+  }
+  // The tails on the x-axis, the root's at x < 0, the tip's (a coordinate axis, so that it can slide) at x > 0.
+  EXPECT_EQ(p.model.tip.frame.col(0), Vec3::UnitX());
+  EXPECT_TRUE(p.model.tip.slides);
+  EXPECT_LT(p.model.root.position.x(), 0.0);
+  EXPECT_GT(p.model.tip.position.x(), 0.0);
+  EXPECT_EQ(p.model.end_force, Vec3(3.9, 0, 0));
+  // The strands are laid touching (2R = 2h): the chords of each helix dip inside it by at most
+  // ebar^2 kappa / 8 (kappa = sin^2 theta / R), so the two strands' chords come closer than 2h by at most
+  // twice that, to leading order in ebar kappa (measured 6.735e-4 against 6.716e-4 here: 5 % allowed for the
+  // higher orders).
+  double deepest = 0.0;
+  for (const auto& c : rod::self_contacts(p.model.self_contact, p.start.position, ebar))
+    deepest = std::max(deepest, 2 * h - c.distance);
+  const double kappa = std::pow(std::sin(theta), 2) / h;
+  EXPECT_LT(deepest, 1.05 * 2.0 * ebar * ebar * kappa / 8.0);
+  // The twist: the tip's material frame is turned by 1.1 rad per length along the rod from the root's
+  // transported frame, i.e. its twist about the tangent per edge is 1.1 ebar.
+  EXPECT_NEAR(p.start.angle[1] - p.start.angle[0], 1.1 * ebar, 1e-14);
+  EXPECT_THROW(knot::lay_plectoneme({h, 0.8, 1, 1, 1, 0, 1}, 100), rodvv::InputError);  // theta >= pi/4
+  EXPECT_THROW(knot::lay_plectoneme({0.0, theta, 1, 1, 1, 0, 1}, 100), rodvv::InputError);
+  EXPECT_THROW(knot::pull_laid_ply(laid, std::nan(""), 1.3, 0.9, 3.9, {h, 1}), rodvv::InputError);
+}
+
+// The 10-degree case at its default level (N = 200, a few seconds): its gates pass; the tension law with
+// the 2 of (1 + 2 / cos 2 theta) halved, evaluated at the same measured R and theta, and the right law
+// evaluated with a bending stiffness 10 % off (what a solver with a wrong B would be compared with) fail
+// the tension gate (its bound at N = 200 is 2 x the measured 3.3 %: a stiffness error of more than 3.6 %
+// shows here; the 15-degree case's bound at N = 800, 0.68 % against the measured 0.25 %, sees 0.5 %).
+TEST(PlectonemeCases, TheTensionGateTellsTheLawFromAWrongOneAndAWrongStiffness) {
+  namespace ref = rodvv::references;
+  const Case& right = named("knot/plectoneme-10deg-nodal");
+  EXPECT_TRUE(run_at_default_levels(right).passed());
+  const double B = parameter_value(right.info.parameters, "B"), h = parameter_value(right.info.parameters, "radius");
+  for (const double variant : {0.0, 1.0}) {
+    Case wrong = right;
+    const LevelRunner original = wrong.run_level;
+    wrong.run_level = [original, variant, B, h](const Parameters& p, double level) {
+      LevelOutput out = original(p, level);
+      const double R = out.metrics["ply_radius"].computed * h, theta = out.metrics["helix_angle"].computed * 3.14159265358979 / 180.0;
+      const double T = out.metrics["tail_tension"].computed;
+      const double s2 = std::sin(theta) * std::sin(theta);
+      const double law = variant == 0.0 ? B / (R * R) * 0.5 * s2 * s2 * (1.0 + 1.0 / std::cos(2 * theta))
+                                         : ref::plectoneme({1.10 * B, R, theta, 0, 0}).tail_tension;
+      out.metrics["tension_law"] = {T / law - 1.0, 0.0, std::abs(T / law - 1.0)};
+      return out;
+    };
+    EXPECT_FALSE(run_at_default_levels(wrong).passed()) << variant;
+  }
+}
+
 }  // namespace
+

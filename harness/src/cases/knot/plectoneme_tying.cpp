@@ -83,8 +83,9 @@ PulledPly pull_laid_ply(const TiedRod& laid, double twist_rate, double B, double
   model.twist_inertia = 0.0;
   model.self_contact = contact;
   model.end_force = Vec3(tension, 0.0, 0.0);
-  // Material angle of edge j: the twist accumulated up to its midpoint, at arclength j ebar.
-  const double ebar = rod::rest_edge_length(model);
+  // Material angle of edge j: the twist accumulated up to its midpoint, at arclength j ebar (both ends
+  // clamped: ebar = L / (N - 1), model.hpp).
+  const double ebar = laid.length / (double(model.elements) - 1.0);
   std::vector<double> angles(model.elements);
   for (std::size_t j = 0; j < angles.size(); ++j) angles[j] = twist_rate * double(j) * ebar;
   ply.start = rod::make_state(laid.vertices, Vec3::UnitZ(), angles);
