@@ -322,8 +322,8 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
         const bool progress = !capped && trial->measure < outcome.residual;
         // A capped step is not the pseudo-time step tau asked for but a fraction of it: tau shrinks by
         // that fraction (at most 10x per step), so that the next step is about as long as the cap allows
-        // and the iterate follows the pseudo-time path instead of jumping along a soft mode (a ply
-        // unwinding through its end loop did, at N = 200).
+        // and the iterate follows the pseudo-time path instead of jumping along a soft mode (without
+        // this the 15-degree plectoneme case ran for more than 10 minutes; with it, 30 s).
         const double growth =
             progress ? std::clamp(outcome.residual / trial->measure, 1.2, 10.0) : (capped ? std::max(0.1, cap_ratio) : 1.0);
         state = std::move(trial->state);

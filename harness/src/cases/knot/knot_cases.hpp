@@ -5,6 +5,12 @@
 
 namespace rodvv::harness::knot_cases {
 
+// The method every knot case runs (the nodal rod's contact statics), as the report names it.
+inline constexpr const char* kContactStaticsMethod =
+    "discrete elastic rod (Bergou et al. 2008) with a C^2 self-contact barrier (k/3)(2h - d)^3 between "
+    "non-adjacent segments (sort-and-sweep broad phase); statics by Newton with exact derivatives, sparse LU, "
+    "pseudo-transient continuation (Kelley & Keyes 1998)";
+
 void add_trefoil_nodal(Registry& registry);     // open trefoil pulled by a dead load, nodal 3-D rod
 void add_plectoneme_nodal(Registry& registry);  // plectoneme with a free end loop, both ends clamped, nodal 3-D rod
 

@@ -14,9 +14,6 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr int kSamples = 2000;  // per piece of the dense curve (chord error ~ (piece / 2000)^2 curvature)
 
-// 0 -> 1 with zero slope at both ends.
-double ease(double u) { return 0.5 - 0.5 * std::cos(kPi * std::clamp(u, 0.0, 1.0)); }
-
 std::vector<Vec3> dense_curve(const PlyLayout& p) {
   const double R = p.ply_radius, rho = p.junction_radius, P = p.ply_length, ramp = 0.25 * P;
   // The winding angle phi at the ply's sample heights y_k = rho + P k / kSamples (trapezoidal rule on

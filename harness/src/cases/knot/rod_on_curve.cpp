@@ -1,6 +1,8 @@
 #include "rod_on_curve.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 #include "rodvv/common/validation.hpp"
 
@@ -33,5 +35,7 @@ TiedRod rod_on_curve(const std::vector<Vec3>& curve, std::size_t elements, bool 
   }
   return rod;
 }
+
+double ease(double u) { return 0.5 - 0.5 * std::cos(std::numbers::pi * std::clamp(u, 0.0, 1.0)); }
 
 }  // namespace rodvv::harness::knot_cases

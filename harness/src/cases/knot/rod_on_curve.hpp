@@ -21,4 +21,8 @@ struct TiedRod {
 // InputError: fewer than 3 elements or 2 curve points.
 TiedRod rod_on_curve(const std::vector<Vec3>& curve, std::size_t elements, bool clamped_tip);
 
+// 0 -> 1 over u in [0, 1] with zero slope at both ends (1/2 - 1/2 cos(pi u); 0 below, 1 above): how the
+// tyings ease a curve from one shape into another.
+double ease(double u);
+
 }  // namespace rodvv::harness::knot_cases

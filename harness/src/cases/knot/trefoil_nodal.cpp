@@ -43,10 +43,7 @@ namespace {
 namespace rod = solvers::rod3d;
 using namespace cases;
 
-const char* const kMethod =
-    "discrete elastic rod (Bergou et al. 2008) with a C^2 self-contact barrier (k/3)(2h - d)^3 between "
-    "non-adjacent segments (sort-and-sweep broad phase); statics by Newton with exact derivatives, sparse LU, "
-    "pseudo-transient continuation (Kelley & Keyes 1998)";
+const char* const kMethod = kContactStaticsMethod;
 
 struct Knot {
   double B, C, T, looseness, barrier;

@@ -15,9 +15,6 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr int kSamples = 400;  // per piece of the dense curve (chord error ~ (arc / 400)^2 curvature)
 
-// 0 -> 1 with zero slope at both ends.
-double ease(double u) { return 0.5 - 0.5 * std::cos(kPi * std::clamp(u, 0.0, 1.0)); }
-
 // The dense open curve, from the root tail's far end to the tip tail's far end (before the turn).
 std::vector<Vec3> dense_curve(const BraidClosure& k) {
   const double r = k.strand_offset, a = k.braid_half_length, rho = k.loop_radius, g = k.tail_offset;

@@ -6,7 +6,8 @@
 // continuation. With self-contact (model.hpp, self_contact.hpp) the barrier couples vertices far
 // apart along the rod, so the Jacobian is factorised by a sparse LU (COLAMD ordering) instead; no
 // vertex moves more than h/2 per Newton step (segments cannot jump through each other between the
-// barrier's evaluations), and a line-search trial in which two segments intersect is shortened.
+// barrier's evaluations; a pseudo-transient step so capped shrinks the pseudo-time step by the cap
+// ratio), and a line-search trial in which two segments intersect is shortened.
 //
 // Continuation: the loads (gravity, tip force, tip moment) are scaled by lambda, and the supported
 // ends are moved from where `initial` has them to where the model puts them (positions linearly, end
