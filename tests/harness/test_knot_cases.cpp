@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "../../harness/src/cases/knot/contact_profile.hpp"
 #include "../../harness/src/cases/knot/plectoneme_tying.hpp"
 #include "../../harness/src/cases/knot/trefoil_tying.hpp"
 #include "case_test_support.hpp"
@@ -33,6 +34,36 @@ TEST(KnotCases, TrefoilPassesAtDefaultLevels) {
   EXPECT_TRUE(result.passed()) << failing_gates(result);
   EXPECT_FALSE(result.gates.empty());
   EXPECT_EQ(rodvv::testing::case_names_of_family("knot").size(), 2u);
+  // The report's contact-force profile beside H(s): zero on the tails, positive in the braid.
+  const auto& series = result.levels.back().series;
+  const auto profile = std::find_if(series.begin(), series.end(), [](const Series& s) { return s.name == "contact force p(s)"; });
+  ASSERT_NE(profile, series.end());
+  EXPECT_EQ(profile->y.front(), 0.0);
+  EXPECT_EQ(profile->y.back(), 0.0);
+  EXPECT_GT(*std::max_element(profile->y.begin(), profile->y.end()), 0.0);
+}
+
+// One pair, force 2 along e_z between segment 0 (at s = 0.25) and segment 3 (at t = 0.5) of a 4-edge rod
+// of length 2 (free ends: ebar = 0.5): vertex forces 1.5, 0.5 on the first segment's ends, 1, 1 on the
+// second's, per length / 0.5.
+TEST(KnotContactProfile, SplitsEachPairByItsClosestPointParameters) {
+  rod::RodModel model;
+  model.elements = 4;
+  model.length = 2.0;
+  rod::ContactPair pair;
+  pair.first = 0;
+  pair.second = 3;
+  pair.s = 0.25;
+  pair.t = 0.5;
+  pair.force = 2.0;
+  pair.normal = Vec3::UnitZ();
+  const Series p = knot::contact_force_series(model, {pair});
+  ASSERT_EQ(p.y.size(), 5u);
+  const std::vector<double> expected{3.0, 1.0, 0.0, 2.0, 2.0};
+  for (std::size_t i = 0; i < 5; ++i) {
+    EXPECT_DOUBLE_EQ(p.x[i], 0.5 * double(i));
+    EXPECT_DOUBLE_EQ(p.y[i], expected[i]) << i;
+  }
 }
 
 // Claimed at second order, the first-order H error fails its order gate; an error three times larger

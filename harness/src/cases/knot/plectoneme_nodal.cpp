@@ -33,6 +33,7 @@
 #include <string>
 
 #include "../case_builder.hpp"
+#include "contact_profile.hpp"
 #include "knot_cases.hpp"
 #include "plectoneme_tying.hpp"
 #include "rodvv/common/errors.hpp"
@@ -173,6 +174,7 @@ LevelOutput run(const Parameters& p, double level) {
   output.metrics["twisting_moment"] = diagnostic(M_t);
   add_noether3d_metrics(output, solution, std::nullopt);
   output.metrics["contact_pairs"] = diagnostic(double(contacts.size()));
+  output.series.push_back(contact_force_series(model, contacts));
   output.metrics["iterations"] = diagnostic(double(result.iterations));
   output.metrics["equilibrium_residual"] = diagnostic(result.residual);
   return output;

@@ -27,6 +27,7 @@
 #include <string>
 
 #include "../case_builder.hpp"
+#include "contact_profile.hpp"
 #include "knot_cases.hpp"
 #include "rodvv/common/errors.hpp"
 #include "rodvv/invariants/noether3d.hpp"
@@ -125,6 +126,7 @@ LevelOutput run(const Parameters& p, double level) {
   output.metrics["shortening_ratio"] = diagnostic((model.length - span) / (4.0 * k.lambda()));
   add_noether3d_metrics(output, solution, k.T);
   output.metrics["contact_pairs"] = diagnostic(double(contacts.size()));
+  output.series.push_back(contact_force_series(model, contacts));
   output.metrics["deepest_overlap"] = diagnostic(deepest);
   output.metrics["iterations"] = diagnostic(double(result.iterations));
   output.metrics["equilibrium_residual"] = diagnostic(result.residual);

@@ -1,0 +1,28 @@
+#include "contact_profile.hpp"
+
+#include "rodvv/harness/trajectory_metrics.hpp"
+
+namespace rodvv::harness::knot_cases {
+
+Series contact_force_series(const solvers::rod3d::RodModel& model,
+                            const std::vector<solvers::rod3d::ContactPair>& contacts) {
+  namespace rod = solvers::rod3d;
+  const std::size_t vertices = model.elements + 1;
+  std::vector<Vec3> force(vertices, Vec3::Zero());
+  for (const auto& c : contacts) {
+    const Vec3 f = c.force * c.normal;  // on the first segment; minus that on the second
+    force[c.first] += (1.0 - c.s) * f;
+    force[c.first + 1] += c.s * f;
+    force[c.second] -= (1.0 - c.t) * f;
+    force[c.second + 1] -= c.t * f;
+  }
+  const double ebar = rod::rest_edge_length(model);
+  std::vector<double> s(vertices), p(vertices);
+  for (std::size_t i = 0; i < vertices; ++i) {
+    s[i] = rod::vertex_arclength(model, i);
+    p[i] = force[i].norm() / ebar;
+  }
+  return thin_series("contact force p(s)", "s", "p (force per length)", s, p);
+}
+
+}  // namespace rodvv::harness::knot_cases
