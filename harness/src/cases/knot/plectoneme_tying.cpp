@@ -74,24 +74,20 @@ PulledPly pull_laid_ply(const TiedRod& laid, double twist_rate, double B, double
   require_finite("twist_rate", twist_rate);
   PulledPly ply;
   rod::RodModel& model = ply.model;
-  model.elements = laid.vertices.size() - 1;
-  model.length = laid.length;
-  model.stiffness = Vec3(C, B, B);
-  model.twist_inertia = 0.0;
-  model.self_contact = contact;
+  model = isotropic_rod_on(laid, B, C, contact);
   model.end_force = Vec3(tension, 0.0, 0.0);
-  // Material angle of edge j: the twist accumulated up to its midpoint, at arclength j ebar (both ends
-  // clamped: ebar = L / (N - 1), model.hpp).
-  const double ebar = laid.length / (double(model.elements) - 1.0);
+  model.root.support = rod::EndSupport::Clamped;
+  model.tip.support = rod::EndSupport::Clamped;
+  model.tip.slides = true;
+  // Material angle of edge j: the twist accumulated up to its midpoint, at arclength j ebar (the
+  // supports set first, so that ebar is the clamped rod's, model.hpp).
+  const double ebar = rod::rest_edge_length(model);
   std::vector<double> angles(model.elements);
   for (std::size_t j = 0; j < angles.size(); ++j) angles[j] = twist_rate * double(j) * ebar;
   ply.start = rod::make_state(laid.vertices, Vec3::UnitZ(), angles);
   const std::size_t n = model.elements;
-  model.root.support = rod::EndSupport::Clamped;
   model.root.position = 0.5 * (laid.vertices[0] + laid.vertices[1]);
   model.root.frame = rod::material_frame(ply.start, 0);
-  model.tip.support = rod::EndSupport::Clamped;
-  model.tip.slides = true;
   model.tip.position = 0.5 * (laid.vertices[n - 1] + laid.vertices[n]);
   model.tip.frame = rod::material_frame(ply.start, n - 1);
   return ply;

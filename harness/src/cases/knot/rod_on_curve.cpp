@@ -36,6 +36,17 @@ TiedRod rod_on_curve(const std::vector<Vec3>& curve, std::size_t elements, bool 
   return rod;
 }
 
+solvers::rod3d::RodModel isotropic_rod_on(const TiedRod& laid, double B, double C,
+                                          const solvers::rod3d::SelfContact& contact) {
+  solvers::rod3d::RodModel model;
+  model.elements = laid.vertices.size() - 1;
+  model.length = laid.length;
+  model.stiffness = Vec3(C, B, B);
+  model.twist_inertia = 0.0;
+  model.self_contact = contact;
+  return model;
+}
+
 double ease(double u) { return 0.5 - 0.5 * std::cos(std::numbers::pi * std::clamp(u, 0.0, 1.0)); }
 
 }  // namespace rodvv::harness::knot_cases

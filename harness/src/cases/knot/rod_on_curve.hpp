@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "rodvv/common/eigen_types.hpp"
+#include "rodvv/solvers/rod3d/model.hpp"
 
 namespace rodvv::harness::knot_cases {
 
@@ -20,6 +21,12 @@ struct TiedRod {
 // shorter than ebar where the curve bends, which the first Newton steps of the statics correct.
 // InputError: fewer than 3 elements or 2 curve points.
 TiedRod rod_on_curve(const std::vector<Vec3>& curve, std::size_t elements, bool clamped_tip);
+
+// The knot cases' rod on a laid curve: N = vertices - 1 edges, the curve's length, inextensible,
+// bending B about both axes, twisting C, no twist inertia (statics), self-contact `contact`; the
+// supports and loads are the caller's.
+solvers::rod3d::RodModel isotropic_rod_on(const TiedRod& laid, double B, double C,
+                                          const solvers::rod3d::SelfContact& contact);
 
 // 0 -> 1 over u in [0, 1] with zero slope at both ends (1/2 - 1/2 cos(pi u); 0 below, 1 above): how the
 // tyings ease a curve from one shape into another.

@@ -82,15 +82,11 @@ PulledKnot pull_tied_rod(const TiedRod& tied, double B, double C, double T, cons
   namespace rod = solvers::rod3d;
   PulledKnot knot;
   rod::RodModel& model = knot.model;
-  model.elements = tied.vertices.size() - 1;
-  model.length = tied.length;
-  model.stiffness = Vec3(C, B, B);
-  model.twist_inertia = 0.0;
+  model = isotropic_rod_on(tied, B, C, contact);
   model.root.support = rod::EndSupport::Clamped;
   model.root.position = 0.5 * (tied.vertices[0] + tied.vertices[1]);
   model.root.frame << 1, 0, 0, 0, 0, -1, 0, 1, 0;  // t = e_x, m1 = e_z, m2 = t x m1 = -e_y
   model.end_force = Vec3(T, 0.0, 0.0);
-  model.self_contact = contact;
   knot.start = rod::make_state(tied.vertices, Vec3::UnitZ());
   return knot;
 }
