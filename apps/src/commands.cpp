@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include "rodvv/harness/registry.hpp"
 #include "rodvv/harness/sweep.hpp"
 #include "rodvv/reports/csv.hpp"
+#include "rodvv/solution_files/solution_file.hpp"
 #include "rodvv/reports/json_io.hpp"
 #include "rodvv/reports/provenance.hpp"
 #include "rodvv/reports/report_document.hpp"
@@ -80,6 +82,8 @@ void write_outputs(const reports::ValidationReport& report, const std::optional<
   }
 }
 
+}  // namespace
+
 // A case in which no gate was evaluated (all of them skipped, e.g. measured bounds at user
 // parameters) has shown nothing: it is not a pass. Said on stderr, exit 1.
 int exit_code(const std::vector<SweepResult>& results) {
@@ -98,6 +102,8 @@ int exit_code(const std::vector<SweepResult>& results) {
 
 // Output paths are checked before any case runs, not after minutes of work: not empty, not a
 // directory, in a directory that exists; and the JSON and CSV files are not the same file.
+namespace {
+
 void check_output_path(const char* option, const std::optional<std::string>& path) {
   if (!path) return;
   if (path->empty()) throw InputError(option, fmt::format("invalid {} '': an output file path is required", option));
@@ -110,6 +116,8 @@ void check_output_path(const char* option, const std::optional<std::string>& pat
     throw InputError(option, fmt::format("invalid {} '{}': directory '{}' does not exist", option, *path,
                                          parent.string()));
 }
+}  // namespace
+
 void check_outputs(const std::optional<std::string>& json_path, const std::optional<std::string>& csv_path) {
   check_output_path("--json", json_path);
   check_output_path("--csv", csv_path);
@@ -119,6 +127,29 @@ void check_outputs(const std::optional<std::string>& json_path, const std::optio
     throw InputError("--csv", fmt::format("invalid --csv '{}': the same file as --json (the CSV would overwrite "
                                           "the JSON)",
                                           *csv_path));
+}
+
+void write_results(std::vector<SweepResult> results, const std::optional<std::string>& json_path,
+                   const std::optional<std::string>& csv_path) {
+  write_outputs(make_report(std::move(results)), json_path, csv_path);
+}
+
+namespace {
+
+// DIR/<case name with '/' -> '_'>_<resolution><level>.json, in the format `rodvv check` reads.
+void write_level_solution(const std::filesystem::path& directory, const Case& c, const harness::Parameters& parameters,
+                          double level, const Solution& solution) {
+  solution_files::SolutionFile file;
+  file.case_name = c.info.name;
+  for (const auto& parameter : parameters) file.parameters.emplace_back(parameter.name, parameter.value);
+  file.resolution_name = c.info.resolution.name;
+  file.level = level;
+  file.solver = "rodvv: " + c.info.method;
+  file.solution = solution;
+  std::string stem = c.info.name;
+  std::replace(stem.begin(), stem.end(), '/', '_');
+  const auto path = directory / fmt::format("{}_{}{:g}.json", stem, c.info.resolution.name, level);
+  solution_files::write_solution_file(path, file);
 }
 
 // --shard I/K (1 <= I <= K): the selected cases whose position in the registry's order is I - 1
@@ -183,6 +214,27 @@ int sweep_command(const SweepOptions& options) {
                                          "(`rodvv list` shows them)",
                                          options.common.cases.front()));
   check_outputs(options.json_path, options.csv_path);
+  Case writing;  // the case with each level's solution written out on the way
+  if (options.write_solutions) {
+    if (!c->checks_solutions())
+      throw InputError("--write-solutions",
+                       fmt::format("invalid --write-solutions: case '{}' does not split its levels into a solver run "
+                                   "and measurements, so it has no solution to write (`rodvv check --list` names "
+                                   "the cases that do)",
+                                   c->info.name));
+    std::error_code error;
+    if (!std::filesystem::is_directory(*options.write_solutions, error))
+      throw InputError("--write-solutions", fmt::format("invalid --write-solutions '{}': not a directory",
+                                                        *options.write_solutions));
+    writing = *c;
+    writing.run_level = [c, directory = std::filesystem::path(*options.write_solutions)](
+                            const harness::Parameters& parameters, double level) {
+      const Solution solution = c->solve(parameters, level);
+      write_level_solution(directory, *c, parameters, level, solution);
+      return c->measure(parameters, level, solution);
+    };
+    c = &writing;
+  }
   auto results = run_cases({c}, options.common, &options.levels);
   fmt::print("{}\n{}", render_level_table(results.front()), render_gate_table(results));
   const int code = exit_code(results);

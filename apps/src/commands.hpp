@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "rodvv/harness/sweep_result.hpp"
+
 namespace rodvv::apps {
 
 enum ExitCode : int { kPass = 0, kGateFailed = 1, kBadInput = 2, kInternalError = 3 };
@@ -26,6 +28,7 @@ struct RunOptions {
 struct SweepOptions {
   CommonOptions common;  // exactly one case
   std::vector<double> levels;
+  std::optional<std::string> write_solutions;  // a directory: one solution file per level
   std::optional<std::string> json_path;
   std::optional<std::string> csv_path;
 };
@@ -37,9 +40,26 @@ struct ReportOptions {
   bool plots = true;
 };
 
+struct CheckOptions {
+  std::optional<std::string> case_name;  // a case or its group; default: the one the files name
+  std::vector<std::string> solutions;    // solution files, one per level
+  std::vector<std::string> max_errors;   // METRIC=VALUE: user bounds at the finest level
+  std::optional<std::string> json_path;
+  std::optional<std::string> csv_path;
+  bool list = false;  // list the cases that check solution files
+};
+
 int list_command(const std::vector<std::string>& patterns, bool verbose);
 int run_command(const RunOptions& options);
 int sweep_command(const SweepOptions& options);
 int report_command(const ReportOptions& options);
+int check_command(const CheckOptions& options);
+
+// Shared by the commands: exit code of finished results (no evidence is not a pass), and the
+// --json / --csv outputs.
+int exit_code(const std::vector<harness::SweepResult>& results);
+void check_outputs(const std::optional<std::string>& json_path, const std::optional<std::string>& csv_path);
+void write_results(std::vector<harness::SweepResult> results, const std::optional<std::string>& json_path,
+                   const std::optional<std::string>& csv_path);
 
 }  // namespace rodvv::apps

@@ -70,6 +70,22 @@ int main(int argc, char** argv) {
       ->required();
   sweep->add_option("--json", sweep_options.json_path, "also write the results as JSON");
   sweep->add_option("--csv", sweep_options.csv_path, "also write the results as CSV");
+  sweep->add_option("--write-solutions", sweep_options.write_solutions,
+                    "write each level's solution into this directory, in the format `rodvv check` reads");
+
+  CheckOptions check_options;
+  auto* check = app.add_subcommand("check", "check solution files written by any solver against a case: the "
+                                            "same metrics, orders and gates as a sweep (README: \"Checking your "
+                                            "own solver\")");
+  check->add_option("case", check_options.case_name,
+                    "the case or its group (default: the one the files name); `rodvv check --list`");
+  check->add_option("--solution", check_options.solutions, "solution files, one per resolution level")
+      ->expected(1, -1);
+  check->add_option("--max-error", check_options.max_errors,
+                    "METRIC=VALUE: the metric's error at the finest level must be <= VALUE; repeatable");
+  check->add_option("--json", check_options.json_path, "also write the results as JSON (mergeable)");
+  check->add_option("--csv", check_options.csv_path, "also write the results as CSV");
+  check->add_flag("--list", check_options.list, "list the cases that check solution files");
 
   ReportOptions report_options;
   auto* report = app.add_subcommand("report", "run every case (or merge results) and write the "
@@ -85,8 +101,9 @@ int main(int argc, char** argv) {
   // An unknown first word is named (CLI11 would only say that a subcommand is required).
   if (argc >= 2 && argv[1][0] != '-') {
     const std::string word = argv[1];
-    if (word != "list" && word != "run" && word != "sweep" && word != "report") {
-      fmt::print(stderr, "rodvv: error: unknown command '{}': expected list, run, sweep or report (rodvv --help)\n", word);
+    if (word != "list" && word != "run" && word != "sweep" && word != "report" && word != "check") {
+      fmt::print(stderr, "rodvv: error: unknown command '{}': expected list, run, sweep, report or check (rodvv --help)\n",
+                 word);
       return kBadInput;
     }
   }
@@ -102,6 +119,7 @@ int main(int argc, char** argv) {
     if (*run) return run_command(run_options);
     if (*sweep) return sweep_command(sweep_options);
     if (*report) return report_command(report_options);
+    if (*check) return check_command(check_options);
   } catch (const rodvv::InputError& error) {
     fmt::print(stderr, "rodvv: error: {}\n", error.what());
     return kBadInput;

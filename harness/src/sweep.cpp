@@ -21,7 +21,9 @@ bool gates_an_order(const Case& c) {
   return false;
 }
 
-std::vector<MetricAnalysis> analyse(const Case& c, const std::vector<LevelResult>& levels) {
+}  // namespace
+
+std::vector<MetricAnalysis> analyse_levels(const Case& c, const std::vector<LevelResult>& levels) {
   std::vector<MetricAnalysis> analyses;
   std::vector<double> h;
   for (const auto& level : levels) h.push_back(level.h);
@@ -64,8 +66,6 @@ std::vector<MetricAnalysis> analyse(const Case& c, const std::vector<LevelResult
   }
   return analyses;
 }
-
-}  // namespace
 
 std::span<const double> sweep_levels(const Case& c, bool extended) {
   if (extended && !c.info.resolution.extended_levels.empty()) return c.info.resolution.extended_levels;
@@ -114,6 +114,14 @@ void validate_levels(const Case& c, std::span<const double> levels) {
                                    std::to_string(levels.size()));
 }
 
+void split_level(Case& c, SolveLevel solve, MeasureSolution measure) {
+  c.run_level = [solve, measure](const Parameters& parameters, double level) {
+    return measure(parameters, level, solve(parameters, level));
+  };
+  c.solve = std::move(solve);
+  c.measure = std::move(measure);
+}
+
 SweepResult run_sweep(const Case& c, const Parameters& parameters, std::span<const double> levels,
                       const ProgressCallback& progress) {
   validate_levels(c, levels);
@@ -149,7 +157,7 @@ SweepResult run_sweep(const Case& c, const Parameters& parameters, std::span<con
     result.levels.push_back(std::move(level));
   }
 
-  result.analyses = analyse(c, result.levels);
+  result.analyses = analyse_levels(c, result.levels);
   // A measured bound holds at the default parameters; changing a unit scale alone keeps it.
   bool at_defaults = parameters.size() == c.info.parameters.size();
   for (std::size_t i = 0; at_defaults && i < parameters.size(); ++i)

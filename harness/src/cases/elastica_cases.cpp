@@ -107,6 +107,7 @@ MetricSample error_sample(double computed, double reference, double unit) {
 // its spread converges with the mesh).
 void add_noether_metrics(LevelOutput& output, const PlanarRodSolution& solution,
                          std::optional<double> exact_h, const Units& units = {}) {
+  if (solution.axial_force.empty()) return;  // a solution file without internal forces: no H
   const auto spread = invariants::planar_noether_spread(solution);
   output.metrics["H_spread"] = {spread.spread, 0.0, spread.spread};
   if (exact_h) output.metrics["H_mean"] = error_sample(spread.mean, *exact_h, units.force());
@@ -118,7 +119,8 @@ void add_shape_series(LevelOutput& output, const PlanarRodSolution& solution,
                       const std::vector<double>& exact_x, const std::vector<double>& exact_y) {
   output.series.push_back(thin_series("shape|computed", "x", "y", solution.x, solution.y));
   output.series.push_back(thin_series("shape|closed form", "x", "y", exact_x, exact_y));
-  output.series.push_back(thin_series("tension n.t", "s", "n.t", solution.s, solution.axial_force));
+  if (!solution.axial_force.empty())
+    output.series.push_back(thin_series("tension n.t", "s", "n.t", solution.s, solution.axial_force));
 }
 
 // Node-by-node distance to the closed-form shape, and that shape for the overlay plot.
@@ -240,20 +242,27 @@ Parameters column_parameters(double theta0_deg) {
 
 // ---- Mattiasson cantilever ----------------------------------------------------------------------
 
-LevelOutput run_mattiasson_level(e2d::Scheme scheme, const Parameters& parameters, double level) {
+Solution solve_mattiasson(e2d::Scheme scheme, const Parameters& parameters, double level) {
   const double L = parameter_value(parameters, "L"), EI = parameter_value(parameters, "EI");
   const double alpha = parameter_value(parameters, "alpha");
-  const ref::TipLoadedCantilever cantilever{L, EI, alpha * EI / (L * L)};
-  const ref::CantileverTip tip = ref::cantilever_tip(cantilever);
-
   e2d::Problem problem;
   problem.length = L;
   problem.bending_stiffness = [EI](double) { return EI; };
   problem.start.support = e2d::Support::Clamped;
-  problem.end.load.force_y = -cantilever.P;
+  problem.end.load.force_y = -alpha * EI / (L * L);
   e2d::SolverOptions options;
   options.load_steps = alpha > 3.0 ? 6 : 2;
-  const PlanarRodSolution solution = e2d::solve_static(problem, {scheme, element_count(level)}, options);
+  return e2d::solve_static(problem, {scheme, element_count(level)}, options);
+}
+
+// Reads only the solution's nodes (s, x, y, theta) and, where given, its forces for H: a solution
+// file from another solver is measured exactly like rodvv's own.
+LevelOutput measure_mattiasson(const Parameters& parameters, double, const Solution& any) {
+  const auto& solution = solution_as<PlanarRodSolution>(any, "planar_rod");
+  const double L = parameter_value(parameters, "L"), EI = parameter_value(parameters, "EI");
+  const double alpha = parameter_value(parameters, "alpha");
+  const ref::TipLoadedCantilever cantilever{L, EI, alpha * EI / (L * L)};
+  const ref::CantileverTip tip = ref::cantilever_tip(cantilever);
 
   LevelOutput output;
   const Units units = units_of(parameters);
@@ -264,7 +273,8 @@ LevelOutput run_mattiasson_level(e2d::Scheme scheme, const Parameters& parameter
     const ref::CantileverPoint point = ref::cantilever_point(cantilever, s);
     return std::pair{point.x, -point.w};  // w is the downward deflection
   });
-  output.metrics["newton_iterations"] = {double(solution.iterations), std::nullopt, std::nullopt};
+  if (solution.iterations > 0)
+    output.metrics["newton_iterations"] = {double(solution.iterations), std::nullopt, std::nullopt};
   add_shape_metrics(output, solution, shape, tip.H, units);
   return output;
 }
@@ -527,7 +537,7 @@ void register_elastica_cases(Registry& registry) {
           shape_error_metric(),
           kNewtonIterations};
       for (auto& m : noether_metrics(true)) metrics.push_back(m);
-      registry.add(make_case(
+      Case c = make_case(
           fmt::format("elastica/{}/{}", motion, id), "elastica/" + motion,
           fmt::format("clamped-free cantilever, dead tip load P L^2/EI = {:g}, {}", alpha, id), scheme,
           "Cantilever clamped horizontally at s = 0 with a vertical dead load P at the free end: "
@@ -538,7 +548,11 @@ void register_elastica_cases(Registry& registry) {
           {length_parameter(), stiffness_parameter(),
            make_parameter("alpha", alpha, 0.0, 100.0, true, false, "", "load parameter P L^2 / EI")},
           elastica_level_plan(motion, id), metrics,
-          [scheme](const Parameters& p, double level) { return run_mattiasson_level(scheme, p, level); }));
+          nullptr);
+      split_level(
+          c, [scheme](const Parameters& p, double level) { return solve_mattiasson(scheme, p, level); },
+          measure_mattiasson);
+      registry.add(std::move(c));
     }
     {
       auto metrics = std::vector<MetricSpec>{

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "rodvv/common/errors.hpp"
+#include "rodvv/common/solution.hpp"
 #include "rodvv/harness/case_info.hpp"
 #include "rodvv/harness/gate.hpp"
 #include "rodvv/harness/parameters.hpp"
@@ -27,12 +29,38 @@ using LevelRunner = std::function<LevelOutput(const Parameters& parameters, doub
 // InputError. Called before any level runs.
 using ParameterCheck = std::function<void(const Parameters& parameters)>;
 
+// A level split in two, for the cases that can check solutions written by other solvers
+// (`rodvv check`): the solver run, and the measurements of its solution against the reference.
+// measure reads only the Solution (and the parameters and level that posed it), never a solver's
+// internals, so a file written by anyone gives the same metrics as rodvv's own run.
+using SolveLevel = std::function<Solution(const Parameters& parameters, double level)>;
+using MeasureSolution =
+    std::function<LevelOutput(const Parameters& parameters, double level, const Solution& solution)>;
+
 struct Case {
   CaseInfo info;  // info.parameters holds the defaults
   std::vector<GateSpec> gates;
   std::size_t fit_levels = 3;  // least-squares order over the last fit_levels levels (>= 3)
   ParameterCheck check_parameters;
   LevelRunner run_level;
+  // Set together by split_level, in the cases that can check solution files.
+  SolveLevel solve;
+  MeasureSolution measure;
+  bool checks_solutions() const { return bool(solve) && bool(measure); }
 };
+
+// The alternative of a Solution that a case measures; InputError naming both kinds otherwise.
+template <class Kind>
+const Kind& solution_as(const Solution& solution, const char* expected_kind);
+
+// Makes a case check solution files: sets solve, measure, and run_level = measure(solve(...)).
+void split_level(Case& c, SolveLevel solve, MeasureSolution measure);
+
+template <class Kind>
+const Kind& solution_as(const Solution& solution, const char* expected_kind) {
+  if (const Kind* found = std::get_if<Kind>(&solution)) return *found;
+  throw InputError("solution", std::string("this case measures a ") + expected_kind + " solution; got a " +
+                                   solution_kind(solution));
+}
 
 }  // namespace rodvv::harness

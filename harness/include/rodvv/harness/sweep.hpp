@@ -37,6 +37,9 @@ double finest_level_honoured(const Resolution& resolution);
 SweepResult run_sweep(const Case& c, const Parameters& parameters, std::span<const double> levels,
                       const ProgressCallback& progress = {});
 
+// Orders (and Richardson/GCI for extrapolable metrics) of a case's metrics over finished levels.
+std::vector<MetricAnalysis> analyse_levels(const Case& c, const std::vector<LevelResult>& levels);
+
 // Default levels, or the extended ones when asked (falling back to the defaults if a case has none).
 std::span<const double> sweep_levels(const Case& c, bool extended);
 
