@@ -63,7 +63,7 @@ const std::vector<double>* ColumnTable::find(std::string_view name) const {
 ColumnTable columns_from_json(const JsonCursor& object, std::initializer_list<const char*> known) {
   object.expect_object(known);
   ColumnTable table;
-  table.where = object.path();
+  table.where = object.source() + ": " + object.path();
   for (const auto& [key, value] : object.value().items())
     table.columns.emplace_back(key, object.field(key.c_str()).numbers());
   check_lengths(table);

@@ -12,11 +12,12 @@ namespace rodvv::solution_files {
 
 class JsonCursor {
  public:
-  JsonCursor(const nlohmann::json& value, std::string path, const std::string& source)
+  JsonCursor(const nlohmann::ordered_json& value, std::string path, const std::string& source)
       : value_(&value), path_(std::move(path)), source_(&source) {}
 
-  const nlohmann::json& value() const { return *value_; }
+  const nlohmann::ordered_json& value() const { return *value_; }
   const std::string& path() const { return path_; }
+  const std::string& source() const { return *source_; }
 
   // InputError "<source>: <path>: <what>".
   [[noreturn]] void fail(const std::string& what) const;
@@ -34,7 +35,7 @@ class JsonCursor {
 
  private:
   std::string type_name() const;
-  const nlohmann::json* value_;
+  const nlohmann::ordered_json* value_;
   std::string path_;
   const std::string* source_;
 };

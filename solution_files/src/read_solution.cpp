@@ -16,7 +16,7 @@ namespace rodvv::solution_files {
 
 namespace {
 
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 
 // Line and column of a byte offset, for JSON syntax errors.
 std::string line_and_column(std::string_view text, std::size_t byte) {
@@ -180,6 +180,8 @@ SolutionFile parse_solution(std::string_view json_text, const std::string& sourc
     throw InputError("solution", fmt::format("{}: not valid JSON at {}: {}", source,
                                              line_and_column(json_text, error.byte == 0 ? 0 : error.byte - 1),
                                              error.what()));
+  } catch (const json::exception& error) {  // e.g. a number beyond the range of double (1e999)
+    throw InputError("solution", fmt::format("{}: not readable JSON: {}", source, error.what()));
   }
   const JsonCursor root(document, "$", source);
   root.expect_object({"format", "version", "case", "parameters", "resolution", "solver", "planar_rod", "trajectory"});

@@ -1,0 +1,159 @@
+// rodvv check in-process: another solver's solutions through a case's metrics, orders and gates.
+// rodvv's own solutions, written to the solution-file format and read back, give the sweep's metrics
+// bit for bit; an O(h) defect in a solution turns the order gates red; the gates that describe
+// rodvv's solver are skipped, said so, and user bounds apply.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "rodvv/common/errors.hpp"
+#include "rodvv/harness/check.hpp"
+#include "rodvv/harness/registry.hpp"
+#include "rodvv/harness/sweep.hpp"
+#include "rodvv/solution_files/solution_file.hpp"
+
+namespace rodvv::harness {
+namespace {
+
+const Case& mattiasson() { return *default_registry().find("elastica/mattiasson-2/arcs"); }
+const std::vector<double> kLevels = {32, 64, 128};
+
+// Through the file format and back, as `rodvv sweep --write-solutions` and `rodvv check` do.
+Solution through_a_file(const Case& c, const Parameters& parameters, double level) {
+  solution_files::SolutionFile file;
+  file.case_name = c.info.name;
+  for (const auto& parameter : parameters) file.parameters.emplace_back(parameter.name, parameter.value);
+  file.resolution_name = c.info.resolution.name;
+  file.level = level;
+  file.solution = c.solve(parameters, level);
+  return solution_files::parse_solution(solution_files::format_solution(file), "level.json", ".").solution;
+}
+
+std::vector<LevelSolution> solutions_of(const Case& c, const Parameters& parameters,
+                                        const std::vector<double>& levels) {
+  std::vector<LevelSolution> solutions;
+  for (double level : levels) {
+    std::string source = "N";
+    source += std::to_string(int(level));
+    solutions.push_back({source, level, through_a_file(c, parameters, level), "rodvv"});
+  }
+  return solutions;
+}
+
+const GateResult* gate_named(const SweepResult& result, const std::string& metric) {
+  for (const auto& gate : result.gates)
+    if (gate.metric == metric) return &gate;
+  return nullptr;
+}
+
+TEST(Check, RodvvSolutionsThroughFilesReproduceTheSweepExactly) {
+  const Case& c = mattiasson();
+  const Parameters& p = c.info.parameters;
+  const SweepResult sweep = run_sweep(c, p, kLevels);
+  auto solutions = solutions_of(c, p, kLevels);
+  std::reverse(solutions.begin(), solutions.end());  // any order: sorted coarse to fine
+  const SweepResult checked = check_solutions(c, p, solutions, {});
+  ASSERT_EQ(checked.levels.size(), sweep.levels.size());
+  for (std::size_t i = 0; i < sweep.levels.size(); ++i) {
+    EXPECT_EQ(checked.levels[i].level, sweep.levels[i].level);
+    ASSERT_EQ(checked.levels[i].metrics.size(), sweep.levels[i].metrics.size());
+    for (const auto& [name, sample] : sweep.levels[i].metrics) {
+      const MetricSample& other = checked.levels[i].metrics.at(name);
+      EXPECT_EQ(other.computed, sample.computed) << name;
+      EXPECT_EQ(other.reference, sample.reference) << name;
+      EXPECT_EQ(other.error, sample.error) << name;
+    }
+  }
+  // The order gates apply and pass; the bounds measured on rodvv's solver are skipped, and said so.
+  std::size_t orders = 0;
+  for (const auto& gate : checked.gates) {
+    EXPECT_EQ(gate.kind, GateKind::Order) << gate.name;
+    EXPECT_TRUE(gate.passed) << gate.reason;
+    ++orders;
+  }
+  EXPECT_EQ(orders, 4u);
+  ASSERT_EQ(checked.skipped_gates.size(), 2u);
+  EXPECT_NE(checked.skipped_gates[0].find("rodvv's own solver"), std::string::npos);
+  EXPECT_NE(checked.info.method.find("rodvv check"), std::string::npos);
+}
+
+// A solver with an O(h) defect (PyElastica's clamp, README): each node's deflection off by
+// h/2 (s/L)^2. The order gates see it.
+TEST(Check, AFirstOrderDefectTurnsTheOrderGatesRed) {
+  const Case& c = mattiasson();
+  const Parameters& p = c.info.parameters;
+  auto solutions = solutions_of(c, p, kLevels);
+  for (auto& level : solutions) {
+    auto& rod = std::get<PlanarRodSolution>(level.solution);
+    const double h = rod.length / level.level;
+    for (std::size_t i = 0; i < rod.nodes(); ++i) rod.y[i] -= 0.5 * h * std::pow(rod.s[i] / rod.length, 2);
+  }
+  const SweepResult checked = check_solutions(c, p, solutions, {});
+  const GateResult* tip = gate_named(checked, "tip_w");
+  ASSERT_NE(tip, nullptr);
+  EXPECT_FALSE(tip->passed) << tip->reason;
+  ASSERT_TRUE(tip->measured);
+  EXPECT_NEAR(*tip->measured, 1.0, 0.1);
+}
+
+TEST(Check, OneSolutionGivesErrorsAndUserBoundsButNoOrders) {
+  const Case& c = mattiasson();
+  const Parameters& p = c.info.parameters;
+  const auto solutions = solutions_of(c, p, {64});
+  const double error = *check_solutions(c, p, solutions, {}).levels[0].metrics.at("tip_w").error;
+  const std::vector<GateSpec> loose{user_bound(c, "tip_w", 2.0 * error)}, tight{user_bound(c, "tip_w", 0.5 * error)};
+  const SweepResult passed = check_solutions(c, p, solutions, loose);
+  ASSERT_EQ(passed.gates.size(), 1u);
+  EXPECT_TRUE(passed.gates[0].passed);
+  const auto order_skips = std::count_if(passed.skipped_gates.begin(), passed.skipped_gates.end(), [](const auto& s) {
+    return s.find("an order needs solutions at 3 levels or more, got 1") != std::string::npos;
+  });
+  EXPECT_EQ(order_skips, 4);
+  EXPECT_FALSE(check_solutions(c, p, solutions, tight).gates[0].passed);
+}
+
+TEST(Check, WithoutForcesTheInvariantIsNotComputedAndItsGateIsSkipped) {
+  const Case& c = mattiasson();
+  const Parameters& p = c.info.parameters;
+  auto solutions = solutions_of(c, p, kLevels);
+  for (auto& level : solutions) std::get<PlanarRodSolution>(level.solution).axial_force.clear();
+  const SweepResult checked = check_solutions(c, p, solutions, {});
+  EXPECT_FALSE(checked.levels[0].metrics.contains("H_spread"));
+  EXPECT_EQ(gate_named(checked, "H_spread"), nullptr);
+  EXPECT_TRUE(std::any_of(checked.skipped_gates.begin(), checked.skipped_gates.end(), [](const auto& s) {
+    return s.find("order of H_spread") != std::string::npos && s.find("lack the fields") != std::string::npos;
+  }));
+  EXPECT_NE(gate_named(checked, "tip_w"), nullptr);
+}
+
+TEST(Check, RefusesWhatItCannotCheck) {
+  const Case& c = mattiasson();
+  const Parameters& p = c.info.parameters;
+  auto solutions = solutions_of(c, p, {32, 64});
+  EXPECT_THROW(check_solutions(c, p, {}, {}), InputError);
+  auto twice = solutions;
+  twice[1].level = 32;
+  EXPECT_THROW(check_solutions(c, p, twice, {}), InputError);
+  auto fractional = solutions;
+  fractional[0].level = 32.5;
+  EXPECT_THROW(check_solutions(c, p, fractional, {}), InputError);
+  auto trajectory = solutions;
+  trajectory[0].solution = Trajectory{};
+  try {
+    check_solutions(c, p, trajectory, {});
+    ADD_FAILURE() << "a trajectory accepted by a planar case";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("measures a planar_rod solution; got a trajectory"), std::string::npos)
+        << error.what();
+  }
+  EXPECT_THROW(user_bound(c, "tip_z", 1.0), InputError);
+  EXPECT_THROW(user_bound(c, "tip_w", -1.0), InputError);
+  const Case& pendulum = *default_registry().find("pendulum/libration-90/rk4");
+  EXPECT_THROW(check_solutions(pendulum, pendulum.info.parameters, solutions, {}), InputError);
+}
+
+}  // namespace
+}  // namespace rodvv::harness

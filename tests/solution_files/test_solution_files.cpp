@@ -1,0 +1,260 @@
+// The solution-file format of `rodvv check`: bit-exact round trip, second-order derivation of what a
+// file may leave out, and a clear InputError (file, JSON path or CSV line, what was expected) for
+// every malformed file.
+#include <gtest/gtest.h>
+
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "rodvv/common/errors.hpp"
+#include "rodvv/solution_files/solution_file.hpp"
+
+namespace rodvv::solution_files {
+namespace {
+
+PlanarRodSolution awkward_planar(std::size_t n) {
+  PlanarRodSolution rod;
+  rod.length = 1.7;
+  for (std::size_t i = 0; i <= n; ++i) {
+    const double s = 1.7 * double(i) / double(n);  // i/n in double: not a short decimal
+    rod.s.push_back(s);
+    rod.x.push_back(std::sin(s) / 3.0);
+    rod.y.push_back(-std::expm1(s) * 1e-300);  // tiny but normal
+    rod.theta.push_back(std::atan(s) - 2.0 / 3.0);
+    rod.kappa.push_back(1.0 / (1.0 + s));
+    rod.force_x.push_back(-1.0 / 7.0);
+    rod.force_y.push_back(std::nextafter(0.3, 1.0));
+    rod.axial_force.push_back(std::cos(s) / 11.0);
+    rod.shear_force.push_back(std::sin(s) / 13.0);
+    rod.bending_stiffness.push_back(2.3 + s * 1e-17);
+    rod.natural_curvature.push_back(0.0);
+    rod.potential.push_back(s * s / 9.0);
+  }
+  rod.axial_stiffness = 1.0 / 3e-5;
+  rod.shear_stiffness = 7e4 / 3.0;
+  rod.iterations = 12;
+  rod.residual = 3.1e-15;
+  return rod;
+}
+
+// Shortest round-trip decimal text of a double.
+std::string shortest(double value) {
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  return {buffer, end};
+}
+
+SolutionFile file_of(Solution solution) {
+  SolutionFile file;
+  file.case_name = "elastica/mattiasson-2";
+  file.parameters = {{"L", 1.7}, {"EI", 2.3}, {"alpha", 2.0 / 3.0}};
+  file.resolution_name = "N";
+  file.level = 40;
+  file.solver = "a test \"solver\"\n";
+  file.solution = std::move(solution);
+  return file;
+}
+
+TEST(SolutionFile, PlanarRoundTripIsBitExact) {
+  const PlanarRodSolution rod = awkward_planar(40);
+  const SolutionFile back = parse_solution(format_solution(file_of(rod)), "memory", ".");
+  const auto& read = std::get<PlanarRodSolution>(back.solution);
+  for (const auto& [written, got] :
+       {std::pair{&rod.s, &read.s}, {&rod.x, &read.x}, {&rod.y, &read.y}, {&rod.theta, &read.theta},
+        {&rod.kappa, &read.kappa}, {&rod.force_x, &read.force_x}, {&rod.force_y, &read.force_y},
+        {&rod.axial_force, &read.axial_force}, {&rod.shear_force, &read.shear_force},
+        {&rod.bending_stiffness, &read.bending_stiffness}, {&rod.potential, &read.potential}})
+    EXPECT_EQ(*written, *got);  // operator== on doubles: the same bits (no NaN)
+  EXPECT_EQ(read.axial_stiffness, rod.axial_stiffness);
+  EXPECT_EQ(read.shear_stiffness, rod.shear_stiffness);
+  EXPECT_EQ(read.length, rod.length);
+  EXPECT_EQ(read.iterations, 12u);
+  EXPECT_EQ(back.parameters, file_of(rod).parameters);
+  EXPECT_EQ(back.solver, "a test \"solver\"\n");
+  EXPECT_EQ(back.level, 40.0);
+  EXPECT_TRUE(back.derived.empty());
+  EXPECT_TRUE(back.missing.empty());
+}
+
+TEST(SolutionFile, TrajectoryRoundTripIsBitExact) {
+  Trajectory trajectory;
+  for (int i = 0; i < 50; ++i) trajectory.record(0.1 * i / 3.0, std::sin(i / 7.0), -std::cos(i / 9.0) / 3.0);
+  trajectory.steps = 49;
+  trajectory.rhs_evaluations = 196;
+  SolutionFile file = file_of(trajectory);
+  file.resolution_name = "omega_dt";
+  file.level = 0.1 / 3.0;
+  const SolutionFile back = parse_solution(format_solution(file), "memory", ".");
+  const auto& read = std::get<Trajectory>(back.solution);
+  EXPECT_EQ(read.t, trajectory.t);
+  EXPECT_EQ(read.theta, trajectory.theta);
+  EXPECT_EQ(read.theta_dot, trajectory.theta_dot);
+  EXPECT_EQ(read.rhs_evaluations, 196u);
+  EXPECT_EQ(back.level, 0.1 / 3.0);
+}
+
+// A file with positions only, on a circle of radius R (theta = s/R, kappa = 1/R), on a NON-uniform
+// grid: the derived theta and kappa converge at second order, and the file says what was derived.
+TEST(SolutionFile, DerivesThetaAndKappaAtSecondOrder) {
+  const double R = 0.37, L = 2.1;
+  std::vector<double> theta_error, kappa_error;
+  for (int n : {16, 32, 64, 128}) {
+    std::string sv, x, y;
+    for (int i = 0; i <= n; ++i) {
+      const double u = double(i) / n;
+      const double arclength = L * (u + 0.05 * std::sin(std::numbers::pi * u));  // graded, monotone
+      sv += (i ? "," : "") + shortest(arclength);
+      x += (i ? "," : "") + shortest(R * std::sin(arclength / R));
+      y += (i ? "," : "") + shortest(R * (1.0 - std::cos(arclength / R)));
+    }
+    const std::string text = R"({"format": "rodvv-solution", "version": 1, "case": "c", "resolution": {"N": )" +
+                             std::to_string(n) + R"(}, "planar_rod": {"nodes": {"s": [)" + sv + "], \"x\": [" + x +
+                             "], \"y\": [" + y + "]}}}";
+    const SolutionFile file = parse_solution(text, "circle", ".");
+    const auto& rod = std::get<PlanarRodSolution>(file.solution);
+    double worst_theta = 0.0, worst_kappa = 0.0;
+    for (std::size_t i = 0; i < rod.s.size(); ++i) {
+      worst_theta = std::max(worst_theta, std::abs(rod.theta[i] - rod.s[i] / R));
+      worst_kappa = std::max(worst_kappa, std::abs(rod.kappa[i] - 1.0 / R));
+    }
+    theta_error.push_back(worst_theta);
+    kappa_error.push_back(worst_kappa * R);
+    ASSERT_EQ(file.derived.size(), 2u);
+    EXPECT_NE(file.derived[0].find("theta"), std::string::npos);
+    ASSERT_EQ(file.missing.size(), 1u);  // no EI, no force: no H
+    EXPECT_NE(file.missing[0].find("Noether"), std::string::npos);
+    EXPECT_TRUE(rod.axial_force.empty());
+  }
+  for (std::size_t i = 1; i < theta_error.size(); ++i) {
+    // Second order: the error falls by 4 per halving; 3.5 leaves room for the graded grid's
+    // pre-asymptotic terms, and a first-order stencil (ratio 2) fails it.
+    EXPECT_GT(theta_error[i - 1] / theta_error[i], 3.5) << i;
+    EXPECT_GT(kappa_error[i - 1] / kappa_error[i], 3.5) << i;
+  }
+  // Magnitude: the leading term of a three-point stencil is h^2 f'''/6 ~ (L/n)^2 / (6 R^2) for theta
+  // and one derivative more for kappa; measured 2e-4 and 2e-3 at n = 128; bounded by 4x that.
+  EXPECT_LT(theta_error.back(), 1e-3);
+  EXPECT_LT(kappa_error.back(), 1e-2);
+}
+
+struct Malformed {
+  std::string text;
+  std::string message;  // a fragment the InputError must contain
+};
+
+std::string planar(const std::string& nodes, const std::string& extra = "") {
+  return R"({"format": "rodvv-solution", "version": 1, "case": "c", "resolution": {"N": 2}, "planar_rod": {)" +
+         extra + R"("nodes": {)" + nodes + "}}}";
+}
+
+const std::string kNodes = R"("s": [0, 0.5, 1], "x": [0, 0.5, 1], "y": [0, 0, 0])";
+
+TEST(SolutionFile, MalformedFilesNameWhereAndWhat) {
+  const std::vector<Malformed> cases = {
+      {"{ \"format\": ", "not valid JSON at line 1"},
+      {"{\n\"format\": \"rodvv-solution\",\n\"version\": 1,,\n}", "not valid JSON at line 3"},
+      {"[1, 2]", "$: expected an object, got array"},
+      {R"({"format": "other", "version": 1})", "$.format: expected \"rodvv-solution\""},
+      {R"({"format": "rodvv-solution", "version": 2})", "format version 2 is not one this rodvv reads"},
+      {R"({"format": "rodvv-solution", "version": 1, "case": "c", "colour": 1})", "unknown field \"colour\""},
+      {R"({"format": "rodvv-solution", "version": 1, "resolution": {"N": 2}})", "missing required field \"case\""},
+      {R"({"format": "rodvv-solution", "version": 1, "case": "c", "resolution": {"N": 2, "dt": 1}})",
+       "expected an object with one entry"},
+      {R"({"format": "rodvv-solution", "version": 1, "case": "c", "resolution": {"N": -2}})",
+       "$.resolution.N: expected a number > 0, got -2"},
+      {R"({"format": "rodvv-solution", "version": 1, "case": "c", "resolution": {"N": 2}})",
+       "expected exactly one solution"},
+      {R"({"format": "rodvv-solution", "version": 1, "case": "c", "parameters": {"L": "long"}, "resolution": {"N": 2}})",
+       "$.parameters.L: expected a finite number, got the string \"long\""},
+      {planar(R"("s": [0, 0.5, 1], "x": [0, null, 1], "y": [0, 0, 0])"),
+       "$.planar_rod.nodes.x[1]: expected a finite number, got null"},
+      {planar(R"("s": [0, 0.5, 1], "x": [0, 0.5], "y": [0, 0, 0])"), "column \"x\" has 2 values but \"s\" has 3"},
+      {planar(R"("s": [0, 1, 0.5], "x": [0, 0.5, 1], "y": [0, 0, 0])"), "\"s\" must increase strictly"},
+      {planar(R"("s": [0.1, 0.5, 1], "x": [0, 0.5, 1], "y": [0, 0, 0])"), "the arclength must start at 0"},
+      {planar(R"("s": [0, 0.5, 1], "y": [0, 0, 0])"), "missing the required array \"x\""},
+      {planar(R"("s": [0, 0.5, 1], "x": [0, 0.5, 1], "y": [0, 0, 0], "theat": [0, 0, 0])"),
+       "unknown field \"theat\""},
+      {planar(kNodes + R"(, "force_x": [0, 0, 0])"), "force_x and force_y come together"},
+      {planar(kNodes, R"("bending_stiffness": 0, )"), "$.planar_rod.bending_stiffness: expected a number > 0"},
+      {planar(kNodes + R"(, "bending_stiffness": [1, -1, 1])"), "bending_stiffness[1] = -1: must be > 0"},
+      {planar(kNodes + R"(, "bending_stiffness": [1, 1, 1])", R"("bending_stiffness": 1, )"), "given twice"},
+      {planar(kNodes, R"("length": 2, )"), "length 2 differs from the last arclength"},
+      {planar(kNodes, R"("nodes_csv": "n.csv", )"), "expected exactly one of \"nodes\""},
+      {planar(kNodes, R"("iterations": 1.5, )"), "expected a whole number >= 0, got 1.5"},
+      {R"({"format": "rodvv-solution", "version": 1, "case": "c", "resolution": {"N": 2}, "planar_rod": {"nodes": {}},
+          "trajectory": {}})",
+       "expected exactly one solution"},
+      {R"({"format": "rodvv-solution", "version": 1, "case": "c", "resolution": {"dt": 0.1}, "trajectory":
+          {"samples": {"t": [0, 0.1, 0.1], "theta": [0, 1, 2], "theta_dot": [0, 1, 2]}}})",
+       "\"t\" must increase strictly, but t[2] = 0.1 follows t[1] = 0.1"},
+      {R"({"format": "rodvv-solution", "version": 1, "case": "c", "resolution": {"dt": 0.1}, "trajectory":
+          {"samples": {"t": [0, 0.1], "theta": [0, 1]}}})",
+       "missing the required array \"theta_dot\""},
+  };
+  for (const auto& c : cases) {
+    try {
+      parse_solution(c.text, "bad.json", ".");
+      ADD_FAILURE() << "accepted: " << c.text;
+    } catch (const InputError& error) {
+      const std::string what = error.what();
+      EXPECT_NE(what.find("bad.json"), std::string::npos) << what;
+      EXPECT_NE(what.find(c.message), std::string::npos) << "expected \"" << c.message << "\" in: " << what;
+    }
+  }
+}
+
+class CsvNodes : public ::testing::Test {
+ protected:
+  std::filesystem::path directory = std::filesystem::temp_directory_path() / "rodvv_test_csv_nodes";
+  void SetUp() override { std::filesystem::create_directories(directory); }
+  void TearDown() override { std::filesystem::remove_all(directory); }
+  SolutionFile read_with_csv(const std::string& csv) {
+    std::ofstream(directory / "nodes.csv") << csv;
+    const std::string json = R"({"format": "rodvv-solution", "version": 1, "case": "c", "resolution": {"N": 2},
+        "planar_rod": {"nodes_csv": "nodes.csv", "bending_stiffness": 2.5}})";
+    std::ofstream(directory / "run.json") << json;
+    return read_solution_file(directory / "run.json");
+  }
+  void expect_rejected(const std::string& csv, const std::string& message) {
+    try {
+      read_with_csv(csv);
+      ADD_FAILURE() << "accepted: " << csv;
+    } catch (const InputError& error) {
+      EXPECT_NE(std::string(error.what()).find(message), std::string::npos)
+          << "expected \"" << message << "\" in: " << error.what();
+    }
+  }
+};
+
+TEST_F(CsvNodes, ReadsColumnsBesideTheJson) {
+  const SolutionFile file = read_with_csv(
+      "# written by a test\ns, x, y, force_x, force_y\n0, 0, 0, -1, 0\n0.5, 0.5, 0, -1, 0\r\n1, +1, 0, -1, 0\n\n");
+  const auto& rod = std::get<PlanarRodSolution>(file.solution);
+  EXPECT_EQ(rod.x, (std::vector<double>{0.0, 0.5, 1.0}));
+  EXPECT_EQ(rod.bending_stiffness, (std::vector<double>{2.5, 2.5, 2.5}));
+  EXPECT_EQ(rod.axial_force, (std::vector<double>{-1.0, -1.0, -1.0}));  // n.t derived (theta = 0)
+  EXPECT_TRUE(file.missing.empty());
+}
+
+TEST_F(CsvNodes, MalformedCsvNamesTheLine) {
+  expect_rejected("s,x,y\n0,0,0\n0.5,abc,0\n1,1,0\n", "nodes.csv:3: column \"x\": expected a finite number, got \"abc\"");
+  expect_rejected("s,x,y\n0,0,0\n0.5,0.5\n", "nodes.csv:3: 2 fields, but the header names 3 columns");
+  expect_rejected("s,x,why\n", "nodes.csv:1: unknown column \"why\"");
+  expect_rejected("s,x,x\n", "column \"x\" appears twice");
+  expect_rejected("s,x,y\n0,0,0\n0.5,inf,0\n", "expected a finite number, got \"inf\"");
+  expect_rejected("", "no header row");
+  std::filesystem::remove(directory / "nodes.csv");
+  const std::string json = R"({"format": "rodvv-solution", "version": 1, "case": "c", "resolution": {"N": 2},
+      "planar_rod": {"nodes_csv": "absent.csv"}})";
+  std::ofstream(directory / "run.json") << json;
+  EXPECT_THROW(read_solution_file(directory / "run.json"), InputError);
+  EXPECT_THROW(read_solution_file(directory / "no-such.json"), InputError);
+}
+
+}  // namespace
+}  // namespace rodvv::solution_files
