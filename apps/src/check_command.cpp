@@ -65,13 +65,21 @@ harness::GateSpec parse_bound(const Case& c, const std::string& assignment) {
 
 int check_command(const CheckOptions& options) {
   if (options.list) {
-    for (const Case* c : checking_cases())
-      fmt::print("{:<48} {} ({})\n", c->info.group, c->info.title, c->info.resolution.name);
+    std::vector<std::string> groups;
+    for (const Case* c : checking_cases()) {
+      if (std::find(groups.begin(), groups.end(), c->info.group) != groups.end()) continue;
+      groups.push_back(c->info.group);
+      std::vector<std::string> parameters;
+      for (const auto& parameter : c->info.parameters) parameters.push_back(parameter.name);
+      fmt::print("{:<32} resolution {}; parameters {}\n", c->info.group, c->info.resolution.name,
+                 fmt::join(parameters, ", "));
+    }
     return kPass;
   }
   if (options.solutions.empty())
     throw InputError("--solution", "no solution files: `rodvv check [CASE] --solution FILE [FILE ...]`");
   check_outputs(options.json_path, options.csv_path);
+  if (options.case_name) resolve_case(*options.case_name);  // a wrong case costs no file reading
 
   std::vector<solution_files::SolutionFile> files;
   for (const auto& path : options.solutions) files.push_back(solution_files::read_solution_file(path));
