@@ -125,7 +125,7 @@ int check_command(const CheckOptions& options) {
     for (const auto& note : file.missing) fmt::print(stderr, "{}: missing {}\n", file.source, note);
     solutions.push_back({file.source, file.level, std::move(file.solution), file.solver});
   }
-  auto result = harness::check_solutions(c, parameters, std::move(solutions), bounds);
+  auto result = harness::check_solutions(c, parameters, std::move(solutions), bounds, options.order);
   // Its own name in reports, beside (not in place of) rodvv's runs of the same case.
   result.info.name = "check/" + case_name;
   result.info.family = "check";

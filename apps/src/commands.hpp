@@ -44,6 +44,7 @@ struct CheckOptions {
   std::optional<std::string> case_name;  // a case or its group; default: the one the files name
   std::vector<std::string> solutions;    // solution files, one per level
   std::vector<std::string> max_errors;   // METRIC=VALUE: user bounds at the finest level
+  std::optional<double> order;           // the order the solver should show (default: the case's)
   std::optional<std::string> json_path;
   std::optional<std::string> csv_path;
   bool list = false;  // list the cases that check solution files

@@ -83,6 +83,8 @@ int main(int argc, char** argv) {
       ->expected(1, -1);
   check->add_option("--max-error", check_options.max_errors,
                     "METRIC=VALUE: the metric's error at the finest level must be <= VALUE; repeatable");
+  check->add_option("--order", check_options.order,
+                    "the order of convergence the solver should show (default: the case's theoretical order)");
   check->add_option("--json", check_options.json_path, "also write the results as JSON (mergeable)");
   check->add_option("--csv", check_options.csv_path, "also write the results as CSV");
   check->add_flag("--list", check_options.list, "list the cases that check solution files");

@@ -49,7 +49,9 @@ GateSpec user_bound(const Case& c, const std::string& metric, double bound) {
 }
 
 SweepResult check_solutions(const Case& c, const Parameters& parameters, std::vector<LevelSolution> solutions,
-                            std::span<const GateSpec> user_bounds) {
+                            std::span<const GateSpec> user_bounds, std::optional<double> stated_order) {
+  if (stated_order && !(*stated_order > 0.0 && *stated_order <= 20.0))
+    throw InputError("--order", fmt::format("invalid --order {}: must be in (0, 20]", format_value(*stated_order)));
   if (!c.checks_solutions())
     throw InputError("case", fmt::format("case '{}' does not check solution files (its level is not split into "
                                          "a solver run and measurements); `rodvv check --list` names the cases "
@@ -107,6 +109,11 @@ SweepResult check_solutions(const Case& c, const Parameters& parameters, std::ve
       result.skipped_gates.push_back(
           fmt::format("{}: an order needs solutions at {} levels or more, got {}", gate.name, c.fit_levels,
                       solutions.size()));
+    } else if (stated_order) {
+      result.gates.push_back(evaluate_gate(
+          order_gate(gate.metric, *stated_order, fmt::format("the order stated for the solver (--order {:g})",
+                                                             *stated_order)),
+          result));
     } else {
       result.gates.push_back(evaluate_gate(gate, result));
     }

@@ -155,5 +155,23 @@ TEST(Check, RefusesWhatItCannotCheck) {
   EXPECT_THROW(check_solutions(pendulum, pendulum.info.parameters, solutions, {}), InputError);
 }
 
+// A trajectory that stops early would be measured over part of the motion: refused, with the span.
+TEST(Check, ATrajectoryMustCoverTheCasesHorizon) {
+  const Case& c = *default_registry().find("pendulum/libration-90/rk4");
+  const Parameters& p = c.info.parameters;
+  Solution solution = c.solve(p, 0.05);
+  auto& trajectory = std::get<Trajectory>(solution);
+  const std::size_t half = trajectory.size() / 2;
+  for (auto* values : {&trajectory.t, &trajectory.theta, &trajectory.theta_dot}) values->resize(half);
+  try {
+    check_solutions(c, p, {{"short.json", 0.05, solution, "x"}}, {});
+    ADD_FAILURE() << "a half trajectory accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("short.json: the trajectory spans t = 0 .."), std::string::npos)
+        << error.what();
+  }
+  EXPECT_THROW(check_solutions(c, p, solutions_of(c, p, {0.1, 0.05, 0.025}), {}, 0.0), InputError);  // --order 0
+}
+
 }  // namespace
 }  // namespace rodvv::harness

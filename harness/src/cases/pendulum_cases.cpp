@@ -150,8 +150,8 @@ MetricSample error_sample(double computed, double reference) {
   return {computed, reference, std::abs(computed - reference)};
 }
 
-LevelOutput run_accuracy_level(const Motion& motion, const pend::MethodInfo& method,
-                               const Parameters& parameters, double level) {
+Solution solve_accuracy_level(const Motion& motion, const pend::MethodInfo& method, const Parameters& parameters,
+                              double level) {
   const ref::PendulumMotion exact = reference_motion(motion, parameters);
   const ref::PendulumState start = ref::initial_state(exact);
   const double omega = ref::omega_of(exact);
@@ -165,7 +165,26 @@ LevelOutput run_accuracy_level(const Motion& motion, const pend::MethodInfo& met
   } else {
     settings.dt = level / omega;  // the level is omega dt
   }
-  const Trajectory trajectory = pend::integrate(problem, settings);
+  return pend::integrate(problem, settings);
+}
+
+// Reads only the trajectory's samples (t, theta, theta'): a trajectory file from another integrator
+// is measured exactly like rodvv's own.
+LevelOutput measure_accuracy_level(const Motion& motion, const pend::MethodInfo& method, const Parameters& parameters,
+                                   double level, const Solution& solution) {
+  const auto& trajectory = solution_as<Trajectory>(solution, "trajectory");
+  const ref::PendulumMotion exact = reference_motion(motion, parameters);
+  const double omega = ref::omega_of(exact);
+  if (trajectory.size() < 2)
+    throw InputError("trajectory", "a trajectory needs at least 2 samples, got " + std::to_string(trajectory.size()));
+  // The errors are maxima over the whole motion: a trajectory must cover it, from t = 0 to at least
+  // the horizon (to a relative 1e-9, a solver's accumulated t += dt; a fixed-step integrator may end
+  // a step past it, as rodvv's do).
+  const double horizon = horizon_time(motion, parameters, exact);
+  if (std::abs(trajectory.t.front()) > 1e-9 * horizon || trajectory.t.back() < horizon * (1.0 - 1e-9))
+    throw InputError("trajectory", fmt::format("the trajectory spans t = {:.17g} .. {:.17g}; the case compares "
+                                               "t = 0 .. {:.17g} (its horizon at these parameters)",
+                                               trajectory.t.front(), trajectory.t.back(), horizon));
 
   double theta_error = 0.0, rate_error = 0.0, state_error = 0.0;
   std::vector<double> times, theta_errors;
@@ -201,10 +220,12 @@ LevelOutput run_accuracy_level(const Motion& motion, const pend::MethodInfo& met
   }
   if (method.adaptive) {
     output.metrics["error_over_tolerance"] = {state_error / level, std::nullopt, std::nullopt};
-    output.metrics["rhs_evaluations"] = {static_cast<double>(trajectory.rhs_evaluations),
-                                         std::nullopt, std::nullopt};
+    if (trajectory.rhs_evaluations > 0)
+      output.metrics["rhs_evaluations"] = {static_cast<double>(trajectory.rhs_evaluations), std::nullopt,
+                                           std::nullopt};
   }
-  output.metrics["steps"] = {static_cast<double>(trajectory.steps), std::nullopt, std::nullopt};
+  if (trajectory.steps > 0)
+    output.metrics["steps"] = {static_cast<double>(trajectory.steps), std::nullopt, std::nullopt};
   output.series.push_back(thin_series("theta_error", "t", "theta - theta_exact [rad]", times, theta_errors));
   return output;
 }
@@ -284,9 +305,14 @@ Case accuracy_case(const Motion& motion, const pend::MethodInfo& method) {
   c.check_parameters = [motion](const Parameters& parameters) {
     (void)ref::energy(reference_motion(motion, parameters));  // references validate the motion
   };
-  c.run_level = [motion, method](const Parameters& parameters, double level) {
-    return run_accuracy_level(motion, method, parameters, level);
-  };
+  split_level(
+      c,
+      [motion, method](const Parameters& parameters, double level) {
+        return solve_accuracy_level(motion, method, parameters, level);
+      },
+      [motion, method](const Parameters& parameters, double level, const Solution& solution) {
+        return measure_accuracy_level(motion, method, parameters, level, solution);
+      });
   return c;
 }
 

@@ -8,6 +8,7 @@
 // of, rodvv's solver; they are skipped and the result says so. An order gate needs fit_levels
 // solutions; with fewer it is skipped, and so is a gate on a metric that the solutions do not allow
 // (the reader says which fields were missing).
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -30,8 +31,11 @@ struct LevelSolution {
 // strictly, a solution of the wrong kind (planar for a trajectory case), or a user bound on a metric
 // the case does not have. A solution the case's measurements reject (too few nodes, inconsistent
 // arrays) is an InputError naming its source.
+// stated_order: the order of the user's scheme (--order); the order gates then use the window
+// around it instead of around the case's theoretical order (a first-order scheme checked against a
+// problem that rodvv solves at second order).
 SweepResult check_solutions(const Case& c, const Parameters& parameters, std::vector<LevelSolution> solutions,
-                            std::span<const GateSpec> user_bounds);
+                            std::span<const GateSpec> user_bounds, std::optional<double> stated_order = std::nullopt);
 
 // An upper bound on a metric's gated value at the finest level, stated by the user.
 GateSpec user_bound(const Case& c, const std::string& metric, double bound);
