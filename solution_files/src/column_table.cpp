@@ -13,14 +13,14 @@ namespace rodvv::solution_files {
 
 namespace {
 
-std::string allowed(std::initializer_list<const char*> known) {
+std::string allowed(const std::vector<std::string>& known) {
   std::string names;
-  for (const char* name : known) names += (names.empty() ? "" : ", ") + std::string(name);
+  for (const auto& name : known) names += (names.empty() ? "" : ", ") + name;
   return names;
 }
 
-bool is_known(std::string_view name, std::initializer_list<const char*> known) {
-  for (const char* k : known)
+bool is_known(std::string_view name, const std::vector<std::string>& known) {
+  for (const auto& k : known)
     if (name == k) return true;
   return false;
 }
@@ -60,8 +60,8 @@ const std::vector<double>* ColumnTable::find(std::string_view name) const {
   return nullptr;
 }
 
-ColumnTable columns_from_json(const JsonCursor& object, std::initializer_list<const char*> known) {
-  object.expect_object(known);
+ColumnTable columns_from_json(const JsonCursor& object, const std::vector<std::string>& known) {
+  object.expect_fields(known);
   ColumnTable table;
   table.where = object.source() + ": " + object.path();
   for (const auto& [key, value] : object.value().items())
@@ -71,7 +71,7 @@ ColumnTable columns_from_json(const JsonCursor& object, std::initializer_list<co
 }
 
 ColumnTable columns_from_csv(const std::filesystem::path& path, const std::string& display,
-                             std::initializer_list<const char*> known) {
+                             const std::vector<std::string>& known) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("solution", fmt::format("{}: cannot open the CSV file '{}'", display, path.string()));
   ColumnTable table;

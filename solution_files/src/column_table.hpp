@@ -3,7 +3,6 @@
 // inline JSON object of arrays or from a CSV file with a header row.
 #include <cstddef>
 #include <filesystem>
-#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -23,8 +22,8 @@ struct ColumnTable {
 
 // Every column's name must be in `known`; all columns must have one length. InputError otherwise,
 // naming the JSON path or the CSV line and column.
-ColumnTable columns_from_json(const JsonCursor& object, std::initializer_list<const char*> known);
+ColumnTable columns_from_json(const JsonCursor& object, const std::vector<std::string>& known);
 ColumnTable columns_from_csv(const std::filesystem::path& path, const std::string& display,
-                             std::initializer_list<const char*> known);
+                             const std::vector<std::string>& known);
 
 }  // namespace rodvv::solution_files

@@ -1,5 +1,6 @@
 #include "json_cursor.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -22,15 +23,16 @@ std::string JsonCursor::type_name() const {
 }
 
 void JsonCursor::expect_object(std::initializer_list<const char*> known) const {
+  expect_fields(std::vector<std::string>(known.begin(), known.end()));
+}
+
+void JsonCursor::expect_fields(const std::vector<std::string>& known) const {
   if (!value_->is_object()) fail("expected an object, got " + type_name());
   for (const auto& [key, ignored] : value_->items()) {
-    bool found = false;
-    for (const char* name : known) found = found || key == name;
-    if (!found) {
-      std::string names;
-      for (const char* name : known) names += (names.empty() ? "" : ", ") + std::string(name);
-      fail(fmt::format("unknown field \"{}\" (allowed: {})", key, names));
-    }
+    if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+    std::string names;
+    for (const auto& name : known) names += (names.empty() ? "" : ", ") + name;
+    fail(fmt::format("unknown field \"{}\" (allowed: {})", key, names));
   }
 }
 

@@ -24,6 +24,7 @@ class JsonCursor {
 
   // This value must be an object whose keys are all among `known`.
   void expect_object(std::initializer_list<const char*> known) const;
+  void expect_fields(const std::vector<std::string>& known) const;
   bool has(const char* key) const;
   JsonCursor field(const char* key) const;  // required
 

@@ -1,4 +1,6 @@
+#include <array>
 #include <cmath>
+#include <optional>
 #include <fstream>
 #include <sstream>
 
@@ -9,6 +11,7 @@
 #include "column_table.hpp"
 #include "json_cursor.hpp"
 #include "planar_derivation.hpp"
+#include "spatial_columns.hpp"
 #include "rodvv/common/errors.hpp"
 #include "rodvv/solution_files/solution_file.hpp"
 
@@ -34,7 +37,7 @@ std::string line_and_column(std::string_view text, std::size_t byte) {
 
 // The per-node or per-sample arrays: inline under `inline_key`, or in the CSV named by `csv_key`.
 ColumnTable read_columns(const JsonCursor& parent, const char* inline_key, const char* csv_key,
-                         const std::filesystem::path& directory, std::initializer_list<const char*> known) {
+                         const std::filesystem::path& directory, const std::vector<std::string>& known) {
   const bool inline_given = parent.has(inline_key), csv_given = parent.has(csv_key);
   if (inline_given == csv_given)
     parent.fail(fmt::format("expected exactly one of \"{}\" (arrays inline) and \"{}\" (a CSV file)", inline_key,
@@ -156,6 +159,115 @@ PlanarRodSolution read_planar(const JsonCursor& rod, const std::filesystem::path
   return solution;
 }
 
+// A 3-vector field from its three columns: all three, or none (nullopt).
+std::optional<std::vector<Vec3>> vectors(const ColumnTable& table, const std::string& field,
+                                         const std::array<const char*, 3>& axes) {
+  const auto names = vector_columns(field, axes);
+  const std::vector<double>* columns[3] = {table.find(names[0]), table.find(names[1]), table.find(names[2])};
+  const int present = (columns[0] != nullptr) + (columns[1] != nullptr) + (columns[2] != nullptr);
+  if (present == 0) return std::nullopt;
+  if (present != 3)
+    throw InputError("solution", fmt::format("{}: {}, {} and {} come together; {} of them given", table.where, names[0],
+                                             names[1], names[2], present));
+  std::vector<Vec3> values(table.rows());
+  for (std::size_t i = 0; i < values.size(); ++i) values[i] = Vec3((*columns[0])[i], (*columns[1])[i], (*columns[2])[i]);
+  return values;
+}
+
+// The frames R = [n0 n1 n2] from the nine director columns: all nine, or none.
+std::optional<std::vector<Mat3>> frames(const ColumnTable& table) {
+  std::array<std::optional<std::vector<Vec3>>, 3> directors;
+  for (std::size_t d = 0; d < 3; ++d) directors[d] = vectors(table, kDirectors[d], kWorldAxes);
+  const int present = bool(directors[0]) + bool(directors[1]) + bool(directors[2]);
+  if (present == 0) return std::nullopt;
+  if (present != 3)
+    throw InputError("solution", fmt::format("{}: a frame needs the three directors n0, n1, n2 (n0_x .. n2_z); {} of "
+                                             "them given",
+                                             table.where, present));
+  std::vector<Mat3> result(table.rows());
+  for (std::size_t i = 0; i < result.size(); ++i)
+    for (int d = 0; d < 3; ++d) result[i].col(d) = (*directors[std::size_t(d)])[i];
+  return result;
+}
+
+std::vector<std::string> spatial_known(bool stations) {
+  std::vector<std::string> names{"s"};
+  const auto add = [&](const std::string& field, const std::array<const char*, 3>& axes) {
+    for (auto& name : vector_columns(field, axes)) names.push_back(name);
+  };
+  add("position", kWorldAxes);
+  for (auto& name : frame_columns()) names.push_back(name);
+  if (stations) {
+    for (const char* field : {"strain_u", "strain_v", "stiffness", "natural_strain"}) add(field, kMaterialAxes);
+    add("force", kWorldAxes);
+    add("moment", kWorldAxes);
+    names.push_back("potential");
+    names.push_back("shear_energy");
+  }
+  return names;
+}
+
+std::vector<Vec3> required_vectors(const ColumnTable& table, const std::string& field,
+                                   const std::array<const char*, 3>& axes) {
+  if (auto values = vectors(table, field, axes)) return *values;
+  const auto names = vector_columns(field, axes);
+  throw InputError("solution", fmt::format("{}: missing the required arrays {}, {}, {}", table.where, names[0],
+                                           names[1], names[2]));
+}
+
+void require_arclength(const ColumnTable& table, const std::vector<double>& s) {
+  require_increasing(table, "s", s);
+  if (std::abs(s.front()) > 1e-12 * s.back())
+    throw InputError("solution", fmt::format("{}: s[0] = {}: the arclength must start at 0", table.where, s.front()));
+}
+
+SpatialRodSolution read_spatial(const JsonCursor& rod, const std::filesystem::path& directory, SolutionFile& file) {
+  rod.expect_object({"vertices", "vertices_csv", "stations", "stations_csv", "length", "iterations", "residual"});
+  SpatialRodSolution solution;
+  solution.method = file.solver;
+  const ColumnTable vertices = read_columns(rod, "vertices", "vertices_csv", directory, spatial_known(false));
+  solution.vertex_s = required(vertices, "s");
+  require_arclength(vertices, solution.vertex_s);
+  solution.vertex_position = required_vectors(vertices, "position", kWorldAxes);
+  if (auto vertex_frames = frames(vertices)) solution.vertex_frame = std::move(*vertex_frames);
+  solution.length = solution.vertex_s.back();
+  if (rod.has("length")) solution.length = rod.field("length").positive_number();
+
+  if (!rod.has("stations") && !rod.has("stations_csv")) {
+    file.missing.push_back("stations (frames, strains, stiffness, n, m): the Noether invariant H not computed");
+  } else {
+    // The fields H reads (PHYSICS.md §1.1): all of them, so that a partial file is refused, not half-used.
+    const ColumnTable stations = read_columns(rod, "stations", "stations_csv", directory, spatial_known(true));
+    const std::size_t n = stations.rows();
+    solution.s = required(stations, "s");
+    require_increasing(stations, "s", solution.s);
+    solution.position = required_vectors(stations, "position", kWorldAxes);
+    auto station_frames = frames(stations);
+    if (!station_frames)
+      throw InputError("solution", fmt::format("{}: missing the frames n0_x .. n2_z", stations.where));
+    solution.frame = std::move(*station_frames);
+    solution.strain_u = required_vectors(stations, "strain_u", kMaterialAxes);
+    solution.stiffness = required_vectors(stations, "stiffness", kMaterialAxes);
+    solution.force_n = required_vectors(stations, "force", kWorldAxes);
+    solution.moment_m = required_vectors(stations, "moment", kWorldAxes);
+    if (auto v = vectors(stations, "strain_v", kMaterialAxes)) {
+      solution.strain_v = std::move(*v);
+    } else {
+      solution.strain_v.assign(n, Vec3::UnitX());
+      file.derived.push_back("strain_v: (1, 0, 0), an inextensible unshearable (Kirchhoff) rod");
+    }
+    if (auto natural = vectors(stations, "natural_strain", kMaterialAxes))
+      solution.natural_strain = std::move(*natural);
+    else
+      solution.natural_strain.assign(n, Vec3::Zero());
+    solution.potential = stations.find("potential") ? *stations.find("potential") : std::vector<double>(n, 0.0);
+    if (const auto* shear = stations.find("shear_energy")) solution.shear_energy = *shear;
+  }
+  if (rod.has("iterations")) solution.iterations = rod.field("iterations").count();
+  if (rod.has("residual")) solution.residual = rod.field("residual").number();
+  return solution;
+}
+
 Trajectory read_trajectory(const JsonCursor& trajectory, const std::filesystem::path& directory) {
   trajectory.expect_object({"samples", "samples_csv", "steps", "rhs_evaluations"});
   const ColumnTable samples = read_columns(trajectory, "samples", "samples_csv", directory, {"t", "theta", "theta_dot"});
@@ -184,7 +296,8 @@ SolutionFile parse_solution(std::string_view json_text, const std::string& sourc
     throw InputError("solution", fmt::format("{}: not readable JSON: {}", source, error.what()));
   }
   const JsonCursor root(document, "$", source);
-  root.expect_object({"format", "version", "case", "parameters", "resolution", "solver", "planar_rod", "trajectory"});
+  root.expect_object(
+      {"format", "version", "case", "parameters", "resolution", "solver", "planar_rod", "spatial_rod", "trajectory"});
   if (root.field("format").string() != kFormatName)
     root.field("format").fail(fmt::format("expected \"{}\"", kFormatName));
   const JsonCursor version = root.field("version");
@@ -209,10 +322,12 @@ SolutionFile parse_solution(std::string_view json_text, const std::string& sourc
   file.level = resolution.field(file.resolution_name.c_str()).positive_number();
   if (root.has("solver")) file.solver = root.field("solver").string();
 
-  const bool planar = root.has("planar_rod"), trajectory = root.has("trajectory");
-  if (planar == trajectory) root.fail("expected exactly one solution: \"planar_rod\" or \"trajectory\"");
-  if (planar)
+  const int kinds = root.has("planar_rod") + root.has("spatial_rod") + root.has("trajectory");
+  if (kinds != 1) root.fail("expected exactly one solution: \"planar_rod\", \"spatial_rod\" or \"trajectory\"");
+  if (root.has("planar_rod"))
     file.solution = read_planar(root.field("planar_rod"), directory, file);
+  else if (root.has("spatial_rod"))
+    file.solution = read_spatial(root.field("spatial_rod"), directory, file);
   else
     file.solution = read_trajectory(root.field("trajectory"), directory);
   return file;

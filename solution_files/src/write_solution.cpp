@@ -1,3 +1,4 @@
+#include <array>
 #include <cmath>
 #include <fstream>
 
@@ -5,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "rodvv/common/errors.hpp"
+#include "spatial_columns.hpp"
 #include "rodvv/solution_files/solution_file.hpp"
 
 namespace rodvv::solution_files {
@@ -42,6 +44,53 @@ ordered_json planar_json(const PlanarRodSolution& solution) {
   return rod;
 }
 
+void put_vectors(ordered_json& object, const std::string& field, const std::array<const char*, 3>& axes,
+                 const std::vector<Vec3>& values) {
+  if (values.empty()) return;
+  const auto names = vector_columns(field, axes);
+  for (int a = 0; a < 3; ++a) {
+    std::vector<double> column(values.size());
+    for (std::size_t i = 0; i < values.size(); ++i) column[i] = values[i][a];
+    object[names[std::size_t(a)]] = std::move(column);
+  }
+}
+
+void put_frames(ordered_json& object, const std::vector<Mat3>& frames) {
+  for (int d = 0; d < 3; ++d) {
+    std::vector<Vec3> director(frames.size());
+    for (std::size_t i = 0; i < frames.size(); ++i) director[i] = frames[i].col(d);
+    put_vectors(object, kDirectors[std::size_t(d)], kWorldAxes, director);
+  }
+}
+
+ordered_json spatial_json(const SpatialRodSolution& solution) {
+  ordered_json vertices;
+  vertices["s"] = solution.vertex_s;
+  put_vectors(vertices, "position", kWorldAxes, solution.vertex_position);
+  put_frames(vertices, solution.vertex_frame);
+  ordered_json rod;
+  rod["length"] = solution.length;
+  rod["iterations"] = solution.iterations;
+  rod["residual"] = solution.residual;
+  rod["vertices"] = std::move(vertices);
+  if (!solution.s.empty()) {
+    ordered_json stations;
+    stations["s"] = solution.s;
+    put_vectors(stations, "position", kWorldAxes, solution.position);
+    put_frames(stations, solution.frame);
+    put_vectors(stations, "strain_u", kMaterialAxes, solution.strain_u);
+    put_vectors(stations, "strain_v", kMaterialAxes, solution.strain_v);
+    put_vectors(stations, "stiffness", kMaterialAxes, solution.stiffness);
+    put_vectors(stations, "natural_strain", kMaterialAxes, solution.natural_strain);
+    put_vectors(stations, "force", kWorldAxes, solution.force_n);
+    put_vectors(stations, "moment", kWorldAxes, solution.moment_m);
+    put(stations, "potential", solution.potential);
+    put(stations, "shear_energy", solution.shear_energy);
+    rod["stations"] = std::move(stations);
+  }
+  return rod;
+}
+
 ordered_json trajectory_json(const Trajectory& trajectory) {
   ordered_json samples;
   samples["t"] = trajectory.t;
@@ -74,11 +123,10 @@ std::string format_solution(const SolutionFile& file) {
   document["solver"] = file.solver;
   if (const auto* planar = std::get_if<PlanarRodSolution>(&file.solution))
     document["planar_rod"] = planar_json(*planar);
-  else if (const auto* trajectory = std::get_if<Trajectory>(&file.solution))
-    document["trajectory"] = trajectory_json(*trajectory);
+  else if (const auto* spatial = std::get_if<SpatialRodSolution>(&file.solution))
+    document["spatial_rod"] = spatial_json(*spatial);
   else
-    throw InputError("solution", "the solution-file format has no spatial_rod section yet (version 1: planar_rod, "
-                                 "trajectory)");
+    document["trajectory"] = trajectory_json(std::get<Trajectory>(file.solution));
   return document.dump(1) + "\n";
 }
 

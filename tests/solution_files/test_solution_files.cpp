@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "rodvv/common/errors.hpp"
 #include "rodvv/solution_files/solution_file.hpp"
 
@@ -98,6 +100,56 @@ TEST(SolutionFile, TrajectoryRoundTripIsBitExact) {
   EXPECT_EQ(back.level, 0.1 / 3.0);
 }
 
+TEST(SolutionFile, SpatialRoundTripIsBitExact) {
+  SpatialRodSolution rod;
+  rod.length = 1.3;
+  for (int i = 0; i < 9; ++i) {
+    const double s = 1.3 * i / 8.0 + (i == 8 ? 0.0 : 1e-3 / 3.0);
+    const Mat3 frame = Eigen::AngleAxisd(s / 3.0, Vec3(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
+    if (i < 8) {  // stations at element midpoints
+      rod.s.push_back(s);
+      rod.position.push_back(Vec3(s, std::sin(s) / 7.0, -s * s / 3.0));
+      rod.frame.push_back(frame);
+      rod.strain_u.push_back(Vec3(0.1 / 3.0, -s, s * s));
+      rod.strain_v.push_back(Vec3(1.0 + 1e-6 / 3.0, 0.0, 0.0));
+      rod.stiffness.push_back(Vec3(0.7, 1.0, 2.3) * 1.7);
+      rod.natural_strain.push_back(Vec3(0.0, 0.3, 0.0));
+      rod.force_n.push_back(Vec3(0.0, 0.0, -2.0 / 3.0));
+      rod.moment_m.push_back(Vec3(s / 11.0, 0.1, -0.2));
+      rod.potential.push_back(s / 9.0);
+      rod.shear_energy.push_back(1e-12 / 7.0);
+    }
+    rod.vertex_s.push_back(1.3 * i / 8.0);
+    rod.vertex_position.push_back(Vec3(s, 1.0 / 3.0, 0.0));
+    rod.vertex_frame.push_back(frame);
+  }
+  rod.iterations = 5;
+  SolutionFile file = file_of(rod);
+  const SolutionFile back = parse_solution(format_solution(file), "memory", ".");
+  const auto& read = std::get<SpatialRodSolution>(back.solution);
+  EXPECT_EQ(read.s, rod.s);
+  EXPECT_EQ(read.potential, rod.potential);
+  EXPECT_EQ(read.shear_energy, rod.shear_energy);
+  EXPECT_EQ(read.vertex_s, rod.vertex_s);
+  for (std::size_t i = 0; i < rod.s.size(); ++i) {
+    EXPECT_EQ(read.position[i], rod.position[i]);
+    EXPECT_EQ(read.frame[i], rod.frame[i]);
+    EXPECT_EQ(read.strain_u[i], rod.strain_u[i]);
+    EXPECT_EQ(read.strain_v[i], rod.strain_v[i]);
+    EXPECT_EQ(read.stiffness[i], rod.stiffness[i]);
+    EXPECT_EQ(read.natural_strain[i], rod.natural_strain[i]);
+    EXPECT_EQ(read.force_n[i], rod.force_n[i]);
+    EXPECT_EQ(read.moment_m[i], rod.moment_m[i]);
+  }
+  for (std::size_t i = 0; i < rod.vertex_s.size(); ++i) {
+    EXPECT_EQ(read.vertex_position[i], rod.vertex_position[i]);
+    EXPECT_EQ(read.vertex_frame[i], rod.vertex_frame[i]);
+  }
+  EXPECT_EQ(read.iterations, 5u);
+  EXPECT_TRUE(back.missing.empty());
+  EXPECT_TRUE(back.derived.empty());
+}
+
 // A file with positions only, on a circle of radius R (theta = s/R, kappa = 1/R), on a NON-uniform
 // grid: the derived theta and kappa converge at second order, and the file says what was derived.
 TEST(SolutionFile, DerivesThetaAndKappaAtSecondOrder) {
@@ -108,9 +160,13 @@ TEST(SolutionFile, DerivesThetaAndKappaAtSecondOrder) {
     for (int i = 0; i <= n; ++i) {
       const double u = double(i) / n;
       const double arclength = L * (u + 0.05 * std::sin(std::numbers::pi * u));  // graded, monotone
-      sv += (i ? "," : "") + shortest(arclength);
-      x += (i ? "," : "") + shortest(R * std::sin(arclength / R));
-      y += (i ? "," : "") + shortest(R * (1.0 - std::cos(arclength / R)));
+      const auto append = [i](std::string& list, double value) {
+        if (i > 0) list.push_back(',');
+        list.append(shortest(value));
+      };
+      append(sv, arclength);
+      append(x, R * std::sin(arclength / R));
+      append(y, R * (1.0 - std::cos(arclength / R)));
     }
     const std::string text = R"({"format": "rodvv-solution", "version": 1, "case": "c", "resolution": {"N": )" +
                              std::to_string(n) + R"(}, "planar_rod": {"nodes": {"s": [)" + sv + "], \"x\": [" + x +
@@ -152,6 +208,11 @@ std::string planar(const std::string& nodes, const std::string& extra = "") {
          extra + R"("nodes": {)" + nodes + "}}}";
 }
 
+std::string spatial(const std::string& body) {
+  return R"({"format": "rodvv-solution", "version": 1, "case": "c", "resolution": {"N": 1}, "spatial_rod": {)" +
+         body + "}}";
+}
+
 const std::string kNodes = R"("s": [0, 0.5, 1], "x": [0, 0.5, 1], "y": [0, 0, 0])";
 
 TEST(SolutionFile, MalformedFilesNameWhereAndWhat) {
@@ -189,6 +250,17 @@ TEST(SolutionFile, MalformedFilesNameWhereAndWhat) {
       {R"({"format": "rodvv-solution", "version": 1, "case": "c", "resolution": {"N": 2}, "planar_rod": {"nodes": {}},
           "trajectory": {}})",
        "expected exactly one solution"},
+      {spatial(R"("vertices": {"s": [0, 1], "position_x": [0, 1], "position_y": [0, 0]})"),
+       "position_x, position_y and position_z come together; 2 of them given"},
+      {spatial(R"("vertices": {"s": [0, 1], "position_x": [0, 1], "position_y": [0, 0], "position_z": [0, 0],
+                   "n0_x": [1, 1], "n0_y": [0, 0], "n0_z": [0, 0]})"),
+       "a frame needs the three directors n0, n1, n2"},
+      {spatial(R"("vertices": {"s": [0, 1], "position_x": [0, 1], "position_y": [0, 0], "position_z": [0, 0]},
+                 "stations": {"s": [0.25, 0.75], "position_x": [0.25, 0.75], "position_y": [0, 0], "position_z": [0, 0]})"),
+       "missing the frames n0_x .. n2_z"},
+      {spatial(R"("vertices": {"s": [0, 1], "position_x": [0, 1], "position_y": [0, 0], "position_z": [0, 0],
+                   "strain_u_0": [0, 0]})"),
+       "unknown field \"strain_u_0\""},
       {R"({"format": "rodvv-solution", "version": 1, "case": "c", "resolution": {"dt": 0.1}, "trajectory":
           {"samples": {"t": [0, 0.1, 0.1], "theta": [0, 1, 2], "theta_dot": [0, 1, 2]}}})",
        "\"t\" must increase strictly, but t[2] = 0.1 follows t[1] = 0.1"},
