@@ -13,11 +13,11 @@
 #include "rodvv/harness/registry.hpp"
 #include "rodvv/harness/sweep.hpp"
 #include "rodvv/reports/csv.hpp"
-#include "rodvv/solution_files/solution_file.hpp"
 #include "rodvv/reports/json_io.hpp"
 #include "rodvv/reports/provenance.hpp"
 #include "rodvv/reports/report_document.hpp"
 #include "rodvv/reports/report_writer.hpp"
+#include "rodvv/solution_files/solution_file.hpp"
 
 namespace rodvv::apps {
 
@@ -100,10 +100,10 @@ int exit_code(const std::vector<SweepResult>& results) {
   return kPass;
 }
 
-// Output paths are checked before any case runs, not after minutes of work: not empty, not a
-// directory, in a directory that exists; and the JSON and CSV files are not the same file.
 namespace {
 
+// Output paths are checked before any case runs, not after minutes of work: not empty, not a
+// directory, in a directory that exists; and the JSON and CSV files are not the same file.
 void check_output_path(const char* option, const std::optional<std::string>& path) {
   if (!path) return;
   if (path->empty()) throw InputError(option, fmt::format("invalid {} '': an output file path is required", option));
