@@ -68,6 +68,18 @@ SweepResult check_solutions(const Case& c, const Parameters& parameters, std::ve
                                                         ? "a whole number >= 1"
                                                         : "finite and > 0"));
   }
+  // A rod at N elements has N + 1 nodes (vertices): a file whose count disagrees with its declared N
+  // would be fitted at the wrong h.
+  if (resolution.scale == ResolutionScale::Count)
+    for (const auto& solution : solutions) {
+      std::size_t nodes = 0;
+      if (const auto* planar = std::get_if<PlanarRodSolution>(&solution.solution)) nodes = planar->nodes();
+      if (const auto* spatial = std::get_if<SpatialRodSolution>(&solution.solution)) nodes = spatial->vertex_s.size();
+      if (nodes != 0 && double(nodes) != solution.level + 1.0)
+        throw InputError(resolution.name, fmt::format("{}: {} = {} elements, but the rod has {} nodes (N + 1 expected)",
+                                                      solution.source, resolution.name, format_value(solution.level),
+                                                      nodes));
+    }
   // Coarse to fine, whatever order the files came in; two files at one level are ambiguous.
   std::stable_sort(solutions.begin(), solutions.end(), [&](const LevelSolution& a, const LevelSolution& b) {
     return resolution.h(a.level) > resolution.h(b.level);

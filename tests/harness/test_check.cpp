@@ -158,6 +158,15 @@ TEST(Check, RefusesWhatItCannotCheck) {
   auto fractional = solutions;
   fractional[0].level = 32.5;
   EXPECT_THROW(check_solutions(c, p, fractional, {}), InputError);
+  auto miscounted = solutions;
+  miscounted[0].level = 33;  // 33 elements declared, 32 in the rod
+  try {
+    check_solutions(c, p, miscounted, {});
+    ADD_FAILURE() << "a node count that disagrees with N accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("N = 33 elements, but the rod has 33 nodes"), std::string::npos)
+        << error.what();
+  }
   auto trajectory = solutions;
   trajectory[0].solution = Trajectory{};
   try {
