@@ -98,6 +98,20 @@ TEST(Check, SpatialRodSolutionsThroughFilesReproduceTheSweepExactly) {
   }
 }
 
+// The column's midspan values need a node at s = L/2: an odd N is refused, not measured off-centre.
+TEST(Check, PinnedColumnNeedsAMidspanNode) {
+  const Case& c = *default_registry().find("elastica/pinned-pinned-60/arcs");
+  const Parameters& p = c.info.parameters;
+  EXPECT_NO_THROW(check_solutions(c, p, solutions_of(c, p, {32, 64, 128}), {}));
+  try {
+    check_solutions(c, p, solutions_of(c, p, {33, 65, 129}), {});
+    ADD_FAILURE() << "an odd N accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("N33: y_M and kappa_M are taken at the midspan node"), std::string::npos)
+        << error.what();
+  }
+}
+
 // A solver with an O(h) defect (PyElastica's clamp, README): each node's deflection off by
 // h/2 (s/L)^2. The order gates see it.
 TEST(Check, AFirstOrderDefectTurnsTheOrderGatesRed) {

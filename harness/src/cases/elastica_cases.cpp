@@ -160,8 +160,7 @@ double first_mode_amplitude(double load_over_euler) {
   return std::clamp(std::sqrt(8.0 * std::max(load_over_euler - 1.0, 0.0)), 0.3, 2.0);
 }
 
-LevelOutput run_pinned_level(e2d::Scheme scheme, const Parameters& parameters, double level,
-                             bool displacement_control) {
+Solution solve_pinned(e2d::Scheme scheme, const Parameters& parameters, double level, bool displacement_control) {
   const ref::PinnedColumn column{parameter_value(parameters, "L"), parameter_value(parameters, "EI")};
   const double theta0 = parameter_value(parameters, "theta0_deg") * kPi / 180.0;
   const ref::PinnedSolution exact = ref::pinned_solution(column, theta0);
@@ -215,7 +214,26 @@ LevelOutput run_pinned_level(e2d::Scheme scheme, const Parameters& parameters, d
     }
   }
 
+  return solution;
+}
+
+// The node at midspan s = L/2 (N even); InputError for a solution without one.
+std::size_t midspan_node(const PlanarRodSolution& solution, double L) {
   const std::size_t mid = (solution.nodes() - 1) / 2;
+  if (solution.nodes() % 2 == 0 || std::abs(solution.s[mid] - 0.5 * L) > 1e-9 * L)
+    throw InputError("nodes", "y_M and kappa_M are taken at the midspan node: the rod needs a node at s = L/2 "
+                              "(an even number of elements)");
+  return mid;
+}
+
+// Reads only the solution's nodes (s, x, y, theta, kappa) and, where given, its forces (H, and the
+// reaction under displacement control).
+LevelOutput measure_pinned(const Parameters& parameters, const Solution& any, bool displacement_control) {
+  const auto& solution = solution_as<PlanarRodSolution>(any, "planar_rod");
+  const ref::PinnedColumn column{parameter_value(parameters, "L"), parameter_value(parameters, "EI")};
+  const double theta0 = parameter_value(parameters, "theta0_deg") * kPi / 180.0;
+  const ref::PinnedSolution exact = ref::pinned_solution(column, theta0);
+  const std::size_t mid = midspan_node(solution, column.L);
   LevelOutput output;
   const auto shape = compare_shape(solution, [&](double s) {
     const ref::ElasticaPoint point = ref::pinned_point(column, theta0, s);
@@ -225,11 +243,12 @@ LevelOutput run_pinned_level(e2d::Scheme scheme, const Parameters& parameters, d
   output.metrics["y_M"] = error_sample(solution.y[mid], exact.y_M, units.length);
   output.metrics["kappa_M"] = error_sample(std::abs(solution.kappa[mid]), exact.kappa_M, 1.0 / units.length);
   output.metrics["theta0"] = error_sample(solution.theta.front(), theta0);
-  if (displacement_control)
-    output.metrics["reaction_P"] = error_sample(-solution.force_x.back(), exact.P, units.force());
-  else
+  if (!displacement_control)
     output.metrics["shortening"] = error_sample(column.L - solution.x.back(), exact.shortening, units.length);
-  output.metrics["newton_iterations"] = {double(solution.iterations), std::nullopt, std::nullopt};
+  else if (!solution.force_x.empty())
+    output.metrics["reaction_P"] = error_sample(-solution.force_x.back(), exact.P, units.force());
+  if (solution.iterations > 0)
+    output.metrics["newton_iterations"] = {double(solution.iterations), std::nullopt, std::nullopt};
   add_shape_metrics(output, solution, shape, exact.H, units);
   return output;
 }
@@ -281,7 +300,7 @@ LevelOutput measure_mattiasson(const Parameters& parameters, double, const Solut
 
 // ---- roll-up ------------------------------------------------------------------------------------
 
-LevelOutput run_roll_up_level(e2d::Scheme scheme, const Parameters& parameters, double level) {
+Solution solve_roll_up(e2d::Scheme scheme, const Parameters& parameters, double level) {
   const double L = parameter_value(parameters, "L"), EI = parameter_value(parameters, "EI");
   const double turns = parameter_value(parameters, "turns");
   const ref::EndMomentCantilever cantilever{L, EI, turns * ref::roll_up_moment(L, EI)};
@@ -293,8 +312,13 @@ LevelOutput run_roll_up_level(e2d::Scheme scheme, const Parameters& parameters, 
   problem.end.load.moment = cantilever.M;
   e2d::SolverOptions options;
   options.load_steps = 4;
-  const PlanarRodSolution solution = e2d::solve_static(problem, {scheme, element_count(level)}, options);
+  return e2d::solve_static(problem, {scheme, element_count(level)}, options);
+}
 
+LevelOutput measure_roll_up(const Parameters& parameters, double, const Solution& any) {
+  const auto& solution = solution_as<PlanarRodSolution>(any, "planar_rod");
+  const double L = parameter_value(parameters, "L"), EI = parameter_value(parameters, "EI");
+  const ref::EndMomentCantilever cantilever{L, EI, parameter_value(parameters, "turns") * ref::roll_up_moment(L, EI)};
   LevelOutput output;
   const auto shape = compare_shape(solution, [&](double s) {
     const ref::ElasticaPoint point = ref::end_moment_point(cantilever, s);
@@ -500,7 +524,7 @@ void register_elastica_cases(Registry& registry) {
           error_metric("shortening", "L", "end shortening vs 2L(1 - E/K)", true),
           kNewtonIterations};
       for (auto& m : noether_metrics(true)) metrics.push_back(m);
-      registry.add(make_case(
+      Case c = make_case(
           fmt::format("elastica/{}/{}", motion, id), "elastica/" + motion,
           fmt::format("pinned-pinned column, first mode at theta0 = {:g} deg, {}", degrees, id), scheme,
           "Inextensible planar elastica EI theta'' = -P sin theta between pins, the sliding end loaded by "
@@ -508,7 +532,11 @@ void register_elastica_cases(Registry& registry) {
           "theta = 2 asin(k sn(K - lambda s)), lambda L = 2K(k), k = sin(theta0/2); y_M = Lk/K, "
           "kappa_M = 4kK/L, shortening 2L(1 - E/K), H = -P cos theta0",
           kPinnedCitation, column_parameters(degrees), elastica_level_plan(motion, id), metrics,
-          [scheme](const Parameters& p, double level) { return run_pinned_level(scheme, p, level, false); }));
+          nullptr);
+      split_level(
+          c, [scheme](const Parameters& p, double level) { return solve_pinned(scheme, p, level, false); },
+          [](const Parameters& p, double, const Solution& solution) { return measure_pinned(p, solution, false); });
+      registry.add(std::move(c));
     }
     {
       auto metrics = std::vector<MetricSpec>{
@@ -519,14 +547,18 @@ void register_elastica_cases(Registry& registry) {
           error_metric("reaction_P", "EI/L^2", "reaction at the displaced pin vs 4K^2 EI/L^2", true),
           kNewtonIterations};
       for (auto& m : noether_metrics(true)) metrics.push_back(m);
-      registry.add(make_case(
+      Case c = make_case(
           fmt::format("elastica/pinned-displacement/{}", id), "elastica/pinned-displacement",
           fmt::format("pinned-pinned column under imposed end shortening, {}", id), scheme,
           "The pinned-pinned column with the end displacement imposed (displacement control): the pin "
           "at s = L is moved to the chord of the theta0 mode and the reaction force is computed.",
           "reaction P = 4K(k)^2 EI/L^2 for chord L(2E/K - 1)", kPinnedCitation, column_parameters(60.0),
           elastica_level_plan("pinned-displacement", id), metrics,
-          [scheme](const Parameters& p, double level) { return run_pinned_level(scheme, p, level, true); }));
+          nullptr);
+      split_level(
+          c, [scheme](const Parameters& p, double level) { return solve_pinned(scheme, p, level, true); },
+          [](const Parameters& p, double, const Solution& solution) { return measure_pinned(p, solution, true); });
+      registry.add(std::move(c));
     }
     for (double alpha : {1.0, 2.0, 5.0, 10.0}) {
       const std::string motion = fmt::format("mattiasson-{:g}", alpha);
@@ -560,7 +592,7 @@ void register_elastica_cases(Registry& registry) {
                        false, std::nullopt),
           shape_error_metric(scheme == e2d::Scheme::Polygon ? std::optional<double>(2.0) : std::nullopt)};
       for (auto& m : noether_metrics(true, std::nullopt)) metrics.push_back(m);
-      registry.add(make_case(
+      Case c = make_case(
           fmt::format("elastica/roll-up/{}", id), "elastica/roll-up",
           fmt::format("cantilever rolled into a full circle by an end moment, {}", id), scheme,
           "Cantilever clamped at s = 0 with a dead end moment M = 2 pi EI/L (turns = 1): an exact circle.",
@@ -569,7 +601,11 @@ void register_elastica_cases(Registry& registry) {
           {length_parameter(), stiffness_parameter(),
            make_parameter("turns", 1.0, 0.0, 1.0, true, false, "", "M L / (2 pi EI)")},
           elastica_level_plan("roll-up", id), metrics,
-          [scheme](const Parameters& p, double level) { return run_roll_up_level(scheme, p, level); }));
+          nullptr);
+      split_level(
+          c, [scheme](const Parameters& p, double level) { return solve_roll_up(scheme, p, level); },
+          measure_roll_up);
+      registry.add(std::move(c));
     }
     for (Variation variation : {Variation::Tapered, Variation::Curved}) {
       const bool tapered = variation == Variation::Tapered;
