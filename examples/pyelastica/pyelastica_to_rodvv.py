@@ -19,7 +19,11 @@ and use nothing about the problem's answer:
 Input: the JSON written by PyElastica runs (one static state; `state` holds PyElastica's arrays under
 their own names, `problem` the rod and its load; see tests/data/pyelastica/README.md).
 
-    pyelastica_to_rodvv.py STATE.json [STATE.json ...] --out DIR [--case elastica/mattiasson-2]
+    pyelastica_to_rodvv.py STATE.json [STATE.json ...] --out DIR [--case CASE]
+
+CASE is elastica/mattiasson-<P L^2/EI> by default (the inextensible elastica; parameters L, EI, alpha),
+or elastica/reissner-cantilever (the extensible, shearable rod at the state's own EA and GA;
+parameters L, EI, P, EA, GA).
 """
 import argparse
 import json
@@ -93,7 +97,15 @@ def convert(path, case_name):
         if shear[2][2][k] != ea or shear[0][0][k] != ga or shear[1][1][k] != ga:
             fail(path, f"shear_matrix differs between elements (element {k}); a uniform rod is expected")
 
-    alpha = -problem["load_vector"][1] * problem["L"] ** 2 / problem["EI"]
+    load = -problem["load_vector"][1]
+    alpha = load * problem["L"] ** 2 / problem["EI"]
+    case_name = case_name or f"elastica/mattiasson-{alpha:g}"
+    if case_name.startswith("elastica/reissner-cantilever"):
+        # The extensible, shearable cantilever: the rod's own EA and GA, the load itself.
+        parameters = {"L": problem["L"], "EI": problem["EI"], "P": load, "EA": ea, "GA": ga}
+    else:
+        # The inextensible elastica: the load parameter only (EA, GA ~ 1e5 are PyElastica's stand-in).
+        parameters = {"L": problem["L"], "EI": problem["EI"], "alpha": alpha}
     solver = "PyElastica {} ({} at {}), {}".format(provenance.get("elastica_version", "?").split(" ")[0],
                                                    provenance.get("source_repo", "?"),
                                                    provenance.get("source_commit", "?")[:12],
@@ -101,8 +113,8 @@ def convert(path, case_name):
     return {
         "format": "rodvv-solution",
         "version": 1,
-        "case": case_name or f"elastica/mattiasson-{alpha:g}",
-        "parameters": {"L": problem["L"], "EI": problem["EI"], "alpha": alpha},
+        "case": case_name,
+        "parameters": parameters,
         "resolution": {"N": n},
         "solver": solver,
         "planar_rod": {

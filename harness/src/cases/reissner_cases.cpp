@@ -240,30 +240,36 @@ CantileverReference cantilever_reference(const Cantilever& c) {
   return shooting_reference(c);
 }
 
-LevelOutput run_cantilever_level(e2d::Scheme scheme, const Parameters& parameters, double level) {
-  const Cantilever c = cantilever_of(parameters);
-  const CantileverReference reference = cantilever_reference(c);
+Solution solve_cantilever(e2d::Scheme scheme, const Parameters& parameters, double level) {
   e2d::SolverOptions options;
   options.tolerance = 1e-12;
   options.load_steps = 2;
-  const PlanarRodSolution solution =
-      e2d::solve_static(cantilever_problem(c), {scheme, element_count(level)}, options);
+  return e2d::solve_static(cantilever_problem(cantilever_of(parameters)), {scheme, element_count(level)}, options);
+}
 
+// Reads only the solution's nodes and, where given, its forces (H and the strains): a file from an
+// extensible, shearable rod code (a Cosserat rod such as PyElastica's) is measured like rodvv's own.
+LevelOutput measure_cantilever(const Parameters& parameters, double, const Solution& any) {
+  const auto& solution = solution_as<PlanarRodSolution>(any, "planar_rod");
+  const Cantilever c = cantilever_of(parameters);
+  const CantileverReference reference = cantilever_reference(c);
   LevelOutput output;
   output.metrics["tip_x"] = error_sample(solution.x.back(), reference.tip_x);
   output.metrics["tip_y"] = error_sample(solution.y.back(), reference.tip_y);
   output.metrics["tip_theta"] = error_sample(solution.theta.back(), reference.tip_theta);
+  output.metrics["reference_uncertainty"] = {reference.uncertainty, std::nullopt, std::nullopt};
+  if (solution.iterations > 0)
+    output.metrics["newton_iterations"] = {double(solution.iterations), std::nullopt, std::nullopt};
+  output.series.push_back(thin_series("shape|computed", "x", "y", solution.x, solution.y));
+  if (solution.axial_force.empty()) return output;  // a file without forces: no H, no strains
   const auto spread = invariants::planar_noether_spread(solution);
   output.metrics["H_mean"] = error_sample(spread.mean, reference.H);
-  output.metrics["reference_uncertainty"] = {reference.uncertainty, std::nullopt, std::nullopt};
-  output.metrics["newton_iterations"] = {double(solution.iterations), std::nullopt, std::nullopt};
   add_noether(output, solution);
   std::vector<double> stretch(solution.s.size()), shear(solution.s.size());
   for (std::size_t i = 0; i < stretch.size(); ++i) {
     stretch[i] = solution.axial_force[i] / c.EA;
-    shear[i] = solution.shear_force[i] / c.GA;
+    shear[i] = solution.shear_force.empty() ? 0.0 : solution.shear_force[i] / c.GA;
   }
-  output.series.push_back(thin_series("shape|computed", "x", "y", solution.x, solution.y));
   output.series.push_back(thin_series("strains|stretch n.t/EA", "s", "strain", solution.s, stretch));
   output.series.push_back(thin_series("strains|shear n.N/GA", "s", "strain", solution.s, shear));
   return output;
@@ -313,7 +319,9 @@ Case cantilever_case(e2d::Scheme scheme) {
   c.gates.push_back(measured_bound("tip_y", b.tip_y, h));
   c.gates.push_back(measured_bound("tip_theta", b.tip_theta, h));
   c.gates.push_back(measured_bound("H_spread", b.H_spread, h));
-  c.run_level = [scheme](const Parameters& p, double level) { return run_cantilever_level(scheme, p, level); };
+  split_level(
+      c, [scheme](const Parameters& p, double level) { return solve_cantilever(scheme, p, level); },
+      measure_cantilever);
   return c;
 }
 
