@@ -123,7 +123,8 @@ int check_command(const CheckOptions& options) {
   for (auto& file : files) {
     for (const auto& note : file.derived) fmt::print(stderr, "{}: derived {}\n", file.source, note);
     for (const auto& note : file.missing) fmt::print(stderr, "{}: missing {}\n", file.source, note);
-    solutions.push_back({file.source, file.level, std::move(file.solution), file.solver});
+    solutions.push_back({file.source, file.level, std::move(file.solution), file.solver, file.cpu_seconds,
+                         file.wall_seconds});
   }
   auto result = harness::check_solutions(c, parameters, std::move(solutions), bounds, options.order);
   // Its own name in reports, beside (not in place of) rodvv's runs of the same case.

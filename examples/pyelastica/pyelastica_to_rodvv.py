@@ -117,6 +117,9 @@ def convert(path, case_name):
         "parameters": parameters,
         "resolution": {"N": n},
         "solver": solver,
+        # PyElastica's time-stepping loop to rest (the provenance's loop_cpu_s, loop_wall_s).
+        "cpu_seconds": provenance.get("loop_cpu_s", 0.0),
+        "wall_seconds": provenance.get("loop_wall_s", 0.0),
         "planar_rod": {
             "length": s[-1],
             "axial_stiffness": ea,

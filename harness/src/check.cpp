@@ -99,6 +99,8 @@ SweepResult check_solutions(const Case& c, const Parameters& parameters, std::ve
     LevelResult level;
     level.level = solution.level;
     level.h = resolution.h(solution.level);
+    level.cpu_seconds = solution.cpu_seconds;  // the solver's own cost, not the check's
+    level.wall_seconds = solution.wall_seconds;
     try {
       LevelOutput output = c.measure(parameters, solution.level, solution.solution);
       level.metrics = std::move(output.metrics);

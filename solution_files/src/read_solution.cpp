@@ -297,7 +297,8 @@ SolutionFile parse_solution(std::string_view json_text, const std::string& sourc
   }
   const JsonCursor root(document, "$", source);
   root.expect_object(
-      {"format", "version", "case", "parameters", "resolution", "solver", "planar_rod", "spatial_rod", "trajectory"});
+      {"format", "version", "case", "parameters", "resolution", "solver", "cpu_seconds", "wall_seconds", "planar_rod",
+       "spatial_rod", "trajectory"});
   if (root.field("format").string() != kFormatName)
     root.field("format").fail(fmt::format("expected \"{}\"", kFormatName));
   const JsonCursor version = root.field("version");
@@ -321,6 +322,11 @@ SolutionFile parse_solution(std::string_view json_text, const std::string& sourc
   file.resolution_name = resolution.value().begin().key();
   file.level = resolution.field(file.resolution_name.c_str()).positive_number();
   if (root.has("solver")) file.solver = root.field("solver").string();
+  for (auto [key, target] : {std::pair{"cpu_seconds", &file.cpu_seconds}, std::pair{"wall_seconds", &file.wall_seconds}})
+    if (root.has(key)) {
+      *target = root.field(key).number();
+      if (*target < 0.0) root.field(key).fail("expected a time >= 0");
+    }
 
   const int kinds = root.has("planar_rod") + root.has("spatial_rod") + root.has("trajectory");
   if (kinds != 1) root.fail("expected exactly one solution: \"planar_rod\", \"spatial_rod\" or \"trajectory\"");

@@ -121,6 +121,8 @@ std::string format_solution(const SolutionFile& file) {
     resolution[file.resolution_name] = file.level;
   document["resolution"] = std::move(resolution);
   document["solver"] = file.solver;
+  if (file.cpu_seconds > 0.0) document["cpu_seconds"] = file.cpu_seconds;
+  if (file.wall_seconds > 0.0) document["wall_seconds"] = file.wall_seconds;
   if (const auto* planar = std::get_if<PlanarRodSolution>(&file.solution))
     document["planar_rod"] = planar_json(*planar);
   else if (const auto* spatial = std::get_if<SpatialRodSolution>(&file.solution))

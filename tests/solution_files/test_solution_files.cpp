@@ -58,6 +58,7 @@ SolutionFile file_of(Solution solution) {
   file.resolution_name = "N";
   file.level = 40;
   file.solver = "a test \"solver\"\n";
+  file.cpu_seconds = 12.0 / 7.0;
   file.solution = std::move(solution);
   return file;
 }
@@ -78,6 +79,8 @@ TEST(SolutionFile, PlanarRoundTripIsBitExact) {
   EXPECT_EQ(read.iterations, 12u);
   EXPECT_EQ(back.parameters, file_of(rod).parameters);
   EXPECT_EQ(back.solver, "a test \"solver\"\n");
+  EXPECT_EQ(back.cpu_seconds, 12.0 / 7.0);
+  EXPECT_EQ(back.wall_seconds, 0.0);
   EXPECT_EQ(back.level, 40.0);
   EXPECT_TRUE(back.derived.empty());
   EXPECT_TRUE(back.missing.empty());
@@ -247,6 +250,8 @@ TEST(SolutionFile, MalformedFilesNameWhereAndWhat) {
       {planar(kNodes, R"("length": 2, )"), "length 2 differs from the last arclength"},
       {planar(kNodes, R"("nodes_csv": "n.csv", )"), "expected exactly one of \"nodes\""},
       {planar(kNodes, R"("iterations": 1.5, )"), "expected a whole number >= 0, got 1.5"},
+      {R"({"format": "rodvv-solution", "version": 1, "case": "c", "resolution": {"N": 2}, "cpu_seconds": -1})",
+       "$.cpu_seconds: expected a time >= 0"},
       {R"({"format": "rodvv-solution", "version": 1, "case": "c", "resolution": {"N": 2}, "planar_rod": {"nodes": {}},
           "trajectory": {}})",
        "expected exactly one solution"},

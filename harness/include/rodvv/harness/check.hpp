@@ -25,6 +25,8 @@ struct LevelSolution {
   double level = 0.0;  // the resolution it was computed at, in the case's resolution (N, dt)
   Solution solution;
   std::string solver;  // who computed it (free text from the file)
+  double cpu_seconds = 0.0;  // its cost, as the file states it (0: not stated)
+  double wall_seconds = 0.0;
 };
 
 // Throws InputError: a case that cannot check solutions, no solutions, levels that do not refine

@@ -9,6 +9,7 @@
 //     "parameters": {"L": 1.0, "EI": 1.0},      the case parameters used (others: the case's defaults)
 //     "resolution": {"N": 40},                  the case's resolution parameter and its value
 //     "solver": "PyElastica 1.0.0, ...",        free text, shown in the report
+//     "cpu_seconds": 37.8, "wall_seconds": 37.8 optional: the solver's cost, for work-precision plots
 //     "planar_rod": {...}  or  "trajectory": {...}
 //   }
 //
@@ -52,6 +53,8 @@ struct SolutionFile {
   std::string resolution_name;                            // "N", "dt"
   double level = 0.0;
   std::string solver;
+  double cpu_seconds = 0.0;   // the solver's cost of this solution, when the file states it (else 0)
+  double wall_seconds = 0.0;
   Solution solution;
   std::vector<std::string> derived;  // what the reader derived, and how ("theta from x, y: ...")
   std::vector<std::string> missing;  // what is absent and what it costs ("force_x, force_y: no H")
