@@ -79,7 +79,8 @@ int check_command(const CheckOptions& options) {
   if (options.solutions.empty())
     throw InputError("--solution", "no solution files: `rodvv check [CASE] --solution FILE [FILE ...]`");
   check_outputs(options.json_path, options.csv_path);
-  if (options.case_name) resolve_case(*options.case_name);  // a wrong case costs no file reading
+  // A case named on the command line is resolved before any file is read: a wrong one costs nothing.
+  const Case* named = options.case_name ? &resolve_case(*options.case_name) : nullptr;
 
   std::vector<solution_files::SolutionFile> files;
   for (const auto& path : options.solutions) files.push_back(solution_files::read_solution_file(path));
@@ -88,7 +89,7 @@ int check_command(const CheckOptions& options) {
     if (file.case_name != case_name)
       throw InputError("case", fmt::format("{} is a solution of '{}', not of '{}': one case per check",
                                            file.source, file.case_name, case_name));
-  const Case& c = resolve_case(case_name);
+  const Case& c = named ? *named : resolve_case(case_name);
 
   // Parameters: the case's defaults with each file's values; every file must pose the same problem.
   harness::Parameters parameters = c.info.parameters;

@@ -167,8 +167,15 @@ TEST(Check, RefusesWhatItCannotCheck) {
   auto solutions = solutions_of(c, p, {32, 64});
   EXPECT_THROW(check_solutions(c, p, {}, {}), InputError);
   auto twice = solutions;
-  twice[1].level = 32;
-  EXPECT_THROW(check_solutions(c, p, twice, {}), InputError);
+  twice[1] = twice[0];  // the same level twice (and a consistent node count, so that this is what is refused)
+  twice[1].source = "again";
+  try {
+    check_solutions(c, p, twice, {});
+    ADD_FAILURE() << "two solutions at one level accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("are both at N = 32: one solution per level"), std::string::npos)
+        << error.what();
+  }
   auto fractional = solutions;
   fractional[0].level = 32.5;
   EXPECT_THROW(check_solutions(c, p, fractional, {}), InputError);

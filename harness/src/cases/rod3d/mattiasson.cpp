@@ -57,8 +57,11 @@ LevelOutput measure(const Parameters& p, double, const Solution& any) {
   const auto exact = ref::cantilever_tip(cantilever);
   const Clamp clamp = clamp_of(p);
   const Vec3 t0 = clamp.frame.col(0), down = clamp.frame.col(2);
+  if (solution.vertex_position.size() < 3 || solution.vertex_s.size() != solution.vertex_position.size())
+    throw InputError("vertices", "the cantilever needs at least 3 vertices, each with its s, got " +
+                                     std::to_string(solution.vertex_position.size()) + " positions and " +
+                                     std::to_string(solution.vertex_s.size()) + " arclengths");
   const std::size_t last = solution.vertex_position.size() - 1;
-  if (last < 2) throw InputError("vertices", "the cantilever needs at least 3 vertices, got " + std::to_string(last + 1));
 
   const Vec3 tip = solution.vertex_position[last] - clamp.position;
   // The tip edge's direction is the chord of the last edge: compare with the closed-form tangent at
