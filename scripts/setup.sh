@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages rodvv needs, only those that are missing (idempotent).
 # Needs root (or sudo) only when something is missing. Nothing is downloaded at build time.
+# Extra package names as arguments are installed too (scripts/fuzz.sh: clang and its runtimes).
 set -euo pipefail
 
 packages=(
@@ -9,6 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libfmt-dev
   python3 python3-matplotlib python3-numpy python3-mpmath
+  "$@"
 )
 
 missing=()

@@ -6,9 +6,11 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <optional>
+#include <string>
 #include <system_error>
 
 #include "rodvv/common/errors.hpp"
@@ -535,20 +537,27 @@ ValidationReport report_from_json(const json& document, std::string_view source_
   return report;
 }
 
+ValidationReport report_from_json_text(std::string_view text, std::string_view source_name) {
+  const std::string source(source_name);
+  json document;
+  try {
+    document = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw InputError(kParameter, source + ": not valid JSON: " + e.what());
+  } catch (const json::exception& e) {  // e.g. out_of_range 406: a number such as 1e400 overflows a double
+    throw InputError(kParameter, source + ": not readable as results: " + e.what() +
+                                     " (every number must be a finite double)");
+  }
+  return report_from_json(document, source_name);
+}
+
 ValidationReport read_report_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw InputError(kParameter, path.string() + ": cannot open: " + std::strerror(errno));
-  json document;
-  try {
-    document = json::parse(in);
-  } catch (const json::parse_error& e) {
-    throw InputError(kParameter, path.string() + ": not valid JSON: " + e.what());
-  } catch (const json::exception& e) {  // e.g. out_of_range 406: a number such as 1e400 overflows a double
-    throw InputError(kParameter, path.string() + ": not readable as results: " + e.what() +
-                                     " (every number must be a finite double)");
-  }
-  return report_from_json(document, path.string());
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) throw InputError(kParameter, path.string() + ": read failed: " + std::strerror(errno));
+  return report_from_json_text(text, path.string());
 }
 
 void write_report_file(const std::filesystem::path& path, const ValidationReport& report) {

@@ -16,7 +16,9 @@
 // that odeint fills before reading) as "used uninitialized": a false positive inside Boost.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wuninitialized"
+#if !defined(__clang__)  // clang has no -Wmaybe-uninitialized (and no such false positive)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <boost/numeric/odeint.hpp>
 #pragma GCC diagnostic pop
 

@@ -36,7 +36,6 @@ namespace {
 namespace ref = rodvv::references;
 namespace e2d = rodvv::solvers::elastica2d;
 constexpr double kPi = std::numbers::pi;
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 constexpr const char* kCavityCitation =
     "Domokos, Holmes & Royce 1997, J. Nonlinear Sci. 7:281-314; Holmes, Domokos, Schmitt & "

@@ -26,6 +26,8 @@ nlohmann::json to_json(const harness::SweepResult& result);
 // report.source.
 ValidationReport report_from_json(const nlohmann::json& document, std::string_view source_name);
 
+// The text of a results file (what read_report_file reads from disk); a fuzz target's entry point.
+ValidationReport report_from_json_text(std::string_view text, std::string_view source_name);
 ValidationReport read_report_file(const std::filesystem::path& path);
 // Pretty-printed with a 2-space indent; doubles are written in shortest round-trip form, so
 // reading the file back gives bit-identical values.
