@@ -33,6 +33,11 @@ double initial_position(const Grid& grid, const VecX& xi, double X) {
 
 }  // namespace
 
+double least_cell_updates(const Grid& grid, const Material& material, const Settings& settings) {
+  const double least_steps = settings.t_end * material.wave_speed() / (settings.cfl * grid.dx());
+  return least_steps * static_cast<double>(grid.cells);
+}
+
 void validate(const Problem& problem, const Settings& settings) {
   const Grid& grid = problem.grid;
   require_finite("x_min", grid.x_min);
@@ -45,6 +50,7 @@ void validate(const Problem& problem, const Settings& settings) {
   require_positive("length", problem.material.length);
   require_finite("gravity", problem.gravity);
   require_positive("t_end", settings.t_end);
+  require_positive("max_cell_updates", settings.max_cell_updates);
   // First-order upwind is stable for Courant numbers up to 1.
   if (!(settings.cfl > 0.0 && settings.cfl <= 1.0))
     throw InputError("cfl", "invalid parameter 'cfl' = " + format_value(settings.cfl) +

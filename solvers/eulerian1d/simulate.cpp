@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
 #include "rodvv/solvers/contact/velocity_qp.hpp"
 #include "rodvv/solvers/eulerian1d/discretisation.hpp"
 
@@ -192,6 +193,15 @@ struct Recorder {
 
 Result simulate(const Problem& problem, const Settings& settings) {
   validate(problem, settings);
+  const double least_work = least_cell_updates(problem.grid, problem.material, settings);
+  if (!(least_work <= settings.max_cell_updates))
+    throw SolverError("eulerian1d",
+                      "work budget: reaching t_end = " + format_value(settings.t_end) + " on " +
+                          std::to_string(problem.grid.cells) + " cells takes at least " + format_value(least_work) +
+                          " cell updates (dt <= cfl dx / c = " +
+                          format_value(settings.cfl * problem.grid.dx() / problem.material.wave_speed()) +
+                          "), above the budget of " + format_value(settings.max_cell_updates) + " per run",
+                      0, least_work);
   Result result;
   result.grid = problem.grid;
   Recorder recorder{problem, result};

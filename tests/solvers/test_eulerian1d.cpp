@@ -176,6 +176,39 @@ TEST(EulerianSimulation, RigidTranslationIsExactToRoundOff) {
   EXPECT_GT(worst, 10 * tol);
 }
 
+TEST(EulerianSimulation, WorkBudgetBoundsTheStepsAndRefusesAnImpossibleRunAtOnce) {
+  // least_cell_updates is a lower bound: dt <= cfl dx / c. For the rigid translation every step has
+  // speed |v0| + c exactly (F = 1), so steps = ceil(t_end (|v0| + c) / (cfl dx)), at most
+  // (|v0| + c)/c + 1 step above the bound per unit of it; with kappa = 4 (c = 2) and v0 = 0.7
+  // the ratio is 1.35.
+  auto p = bar_problem(64, 0.0, 3.0, 0.4, 1.0, 0.7);
+  p.material.kappa = 4.0;
+  eu::Settings s;
+  s.t_end = 1.3;
+  const double least = eu::least_cell_updates(p.grid, p.material, s);
+  const auto r = eu::simulate(p, s);
+  const double actual = static_cast<double>(r.steps) * static_cast<double>(p.grid.cells);
+  EXPECT_GE(actual, least);
+  EXPECT_NEAR(actual / least, (0.7 + 2.0) / 2.0, static_cast<double>(p.grid.cells) / least);
+
+  // A run that cannot fit its budget fails before its first step, naming the budget (a level
+  // failure, exit 1, not an hour-long run): t_end = 1e11 needs >= 1.6e15 cell updates here.
+  s.t_end = 1e11;
+  try {
+    eu::simulate(p, s);
+    ADD_FAILURE() << "no SolverError for a run above the work budget";
+  } catch (const rodvv::SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("work budget"), std::string::npos) << e.what();
+    EXPECT_EQ(e.iterations(), 0u);
+  }
+  // At the budget's edge the bound decides: just above refused, just below runs.
+  s.t_end = 1.3;
+  s.max_cell_updates = 0.99 * least;
+  EXPECT_THROW(eu::simulate(p, s), rodvv::SolverError);
+  s.max_cell_updates = 1.01 * least;
+  EXPECT_NO_THROW(eu::simulate(p, s));
+}
+
 TEST(EulerianSimulation, FreeFallKeepsAUniformVelocity) {
   // Gravity g on an unstressed bar: v = v0 + g t exactly up to round-off (the update adds dt g
   // each step, the advection of a uniform field is zero), momentum rho0 L0 (v0 + g t).

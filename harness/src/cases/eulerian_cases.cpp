@@ -559,6 +559,26 @@ SeedCollision seed_collision_of(const Parameters& p) {
   return {material_of(p), parameter_value(p, "v0"), parameter_value(p, "left_wall"), parameter_value(p, "right_wall")};
 }
 
+// The bar on [0, L0] at v0 between the walls, on a grid with 0.25 L0 margins beyond them.
+eu::Problem seed_collision_problem(const SeedCollision& s, std::size_t cells) {
+  eu::Problem problem;
+  const double L0 = s.material.length, margin = 0.25 * L0;
+  problem.grid = {s.left_wall - margin, s.right_wall + margin, cells};
+  problem.material = {s.material.rho0, s.material.kappa, L0};
+  problem.left_wall = s.left_wall;
+  problem.right_wall = s.right_wall;
+  problem.xi0 = eu::linear_reference_map(problem.grid, 0.0, 1.0);
+  problem.v0 = VecX::Constant(static_cast<Eigen::Index>(problem.grid.nodes()), s.v0);
+  return problem;
+}
+eu::Settings seed_collision_settings(const SeedCollision& s, const Parameters& p) {
+  eu::Settings settings;
+  settings.t_end = s.t_end();
+  settings.cfl = parameter_value(p, "cfl");
+  settings.project_positions = projection_on(p);
+  return settings;
+}
+
 Case seed_collision_case() {
   Case c = base_case("seed-collision", "collision between two barriers (seed slide 10: kappa = 10, v0 = 1)",
                      "Bar on [0, L0] at v0 between rigid walls; it bounces on the right wall, then on the "
@@ -586,18 +606,9 @@ Case seed_collision_case() {
   };
   c.run_level = [](const Parameters& p, double level) {
     const SeedCollision s = seed_collision_of(p);
-    eu::Problem problem;
-    const double L0 = s.material.length, margin = 0.25 * L0;
-    problem.grid = {s.left_wall - margin, s.right_wall + margin, static_cast<std::size_t>(level)};
-    problem.material = {s.material.rho0, s.material.kappa, L0};
-    problem.left_wall = s.left_wall;
-    problem.right_wall = s.right_wall;
-    problem.xi0 = eu::linear_reference_map(problem.grid, 0.0, 1.0);
-    problem.v0 = VecX::Constant(static_cast<Eigen::Index>(problem.grid.nodes()), s.v0);
-    eu::Settings settings;
-    settings.t_end = s.t_end();
-    settings.cfl = parameter_value(p, "cfl");
-    settings.project_positions = projection_on(p);
+    const double L0 = s.material.length;
+    const eu::Problem problem = seed_collision_problem(s, static_cast<std::size_t>(level));
+    const eu::Settings settings = seed_collision_settings(s, p);
     const auto result = eu::simulate(problem, settings);
     const auto& h = result.history;
     LevelOutput out;
@@ -622,14 +633,70 @@ Case seed_collision_case() {
   return c;
 }
 
+// -- the work budget, checked before any level runs --
+// The motion to simulate is set by the parameters (a slow impact, v0 = 1e-12, flies gap/v0 = 1e11
+// before it reaches the wall), and every step has dt <= cfl dx / c. A case refuses (exit 2) the
+// parameters whose run at its finest default or extended level cannot finish within the solver's
+// work budget (eu::Settings::max_cell_updates, about 15 minutes), naming the time span and what
+// sets it; a finer level asked for with `rodvv sweep --levels` is refused by the solver as a level
+// failure at its first step.
+struct LeastWork {
+  double t_end;  // the time to simulate
+  double cell_updates;  // eu::least_cell_updates at the given number of cells
+};
+using LeastWorkAt = std::function<LeastWork(const Parameters& p, std::size_t cells)>;
+
+LeastWorkAt least_work_of(Setup (*setup_of)(const Parameters&)) {
+  return [setup_of](const Parameters& p, std::size_t cells) {
+    const Setup setup = setup_of(p);
+    const ref::BarMaterial m = ref::material_of(setup.motion);
+    eu::Settings settings;
+    settings.t_end = setup.t_end;
+    settings.cfl = parameter_value(p, "cfl");
+    return LeastWork{setup.t_end,
+                     eu::least_cell_updates(domain_for(setup, cells), {m.rho0, m.kappa, m.length}, settings)};
+  };
+}
+
+Case with_work_budget(Case c, LeastWorkAt least_work, std::string time_span) {
+  const auto& r = c.info.resolution;
+  double finest = 0.0;
+  for (double level : r.default_levels) finest = std::max(finest, level);
+  for (double level : r.extended_levels) finest = std::max(finest, level);
+  c.check_parameters = [check = std::move(c.check_parameters), least_work = std::move(least_work),
+                        time_span = std::move(time_span), finest](const Parameters& p) {
+    if (check) check(p);
+    const LeastWork work = least_work(p, static_cast<std::size_t>(finest));
+    const double budget = eu::Settings{}.max_cell_updates;
+    if (!(work.cell_updates <= budget))
+      throw InputError("parameters",
+                       fmt::format("these parameters ask for a run that cannot finish: the time to simulate, "
+                                   "t_end = {:.4g} ({}), takes at least {:.3g} cell updates at N = {} (the finest "
+                                   "level of --extended; dt <= cfl dx / c), above the solver's budget of {:.3g}; "
+                                   "shorten it or raise cfl",
+                                   work.t_end, time_span, work.cell_updates, finest, budget));
+  };
+  return c;
+}
+
 }  // namespace
 
 void register_eulerian_cases(Registry& registry) {
-  registry.add(translation_case());
-  registry.add(standing_wave_case());
-  registry.add(squeeze_case());
-  registry.add(impact_case());
-  registry.add(seed_collision_case());
+  registry.add(with_work_budget(translation_case(), least_work_of(translation_setup), "the parameter t_end"));
+  registry.add(with_work_budget(standing_wave_case(), least_work_of(standing_wave_setup),
+                                "periods times 2 L0/c"));
+  registry.add(with_work_budget(squeeze_case(), least_work_of(squeeze_setup), "one period 2 L0/c"));
+  registry.add(with_work_budget(impact_case(), least_work_of(impact_setup),
+                                "set by the flight to the wall, gap/v0, plus 3 L0/c"));
+  registry.add(with_work_budget(
+      seed_collision_case(),
+      [](const Parameters& p, std::size_t cells) {
+        const SeedCollision s = seed_collision_of(p);
+        return LeastWork{s.t_end(), eu::least_cell_updates(seed_collision_problem(s, cells).grid,
+                                                           {s.material.rho0, s.material.kappa, s.material.length},
+                                                           seed_collision_settings(s, p))};
+      },
+      "set by the flights between the walls over v0, plus 4 L0/c"));
 }
 
 }  // namespace rodvv::harness

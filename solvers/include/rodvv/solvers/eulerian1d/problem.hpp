@@ -46,10 +46,20 @@ struct Settings {
   double cfl = 0.4;  // dt = cfl dx / (max|v| + c max(F + |F - 1|)); see simulate.cpp
   std::vector<double> snapshot_times;  // fields are stored at these times (stepped onto exactly)
   std::size_t max_steps = 10'000'000;
+  // Work budget of one run, in cell updates (steps x cells): checked before the first step
+  // against least_cell_updates, so that a run that cannot finish within it fails at once (a
+  // SolverError naming the budget) instead of after hours. 1e9 is about 15 minutes on the CI
+  // machine class (measured: about 1.2e6 cell updates per second for the contact cases).
+  double max_cell_updates = 1e9;
   // Move an edge that the advection of xi pushed across a wall back onto it (simulate.cpp). Off
   // only to measure the crossing that the velocity-level constraint alone leaves (O(dt^2)).
   bool project_positions = true;
 };
+
+// A lower bound on the work of simulate() to t_end, in cell updates: every step has
+// dt <= cfl dx / c (the step's speed bound max|v| + c max(F + |F - 1|) is at least c, since
+// F + |F - 1| >= 1), so there are at least t_end c / (cfl dx) steps over grid.cells cells.
+double least_cell_updates(const Grid& grid, const Material& material, const Settings& settings);
 
 // Checks every parameter and the initial state (monotone xi, walls outside the initial solid);
 // throws InputError naming the parameter and its allowed range.
