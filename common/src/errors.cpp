@@ -22,6 +22,7 @@ SolverError::SolverError(const std::string& method, const std::string& message,
                          std::size_t iterations, double residual)
     : std::runtime_error(solver_message(method, message, iterations, residual)),
       method_(method),
+      message_(message),
       iterations_(iterations),
       residual_(residual) {}
 

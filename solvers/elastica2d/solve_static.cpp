@@ -18,6 +18,8 @@ using detail::initial_state;
 using detail::newton;
 using detail::fill_solution;
 using detail::NewtonState;
+constexpr int kMaxHalvings = 10;
+constexpr double kMinLoadFraction = 0x1p-10;  // 2^-kMaxHalvings
 }  // namespace
 
 void validate(const SolverOptions& options) {
@@ -44,13 +46,41 @@ PlanarRodSolution solve_static(const Problem& problem, const Discretisation& dis
     from[k] = angle_row ? row.target : z[row.dof];
   }
   NewtonState state;
+  // The planned steps lambda = k / K; a step whose Newton solve fails is retried from the last
+  // converged state as two half steps, down to 1/2^kMaxHalvings of a planned step (adaptive load
+  // control: a large load, e.g. a cantilever at P L^2/EI = 100, leaves the basin of the previous
+  // state in one planned step). A problem that converges in its planned steps is solved exactly
+  // as before, step for step.
   const auto steps = options.load_steps;
-  for (std::size_t step = 1; step <= steps; ++step) {
-    const double lambda = static_cast<double>(step) / static_cast<double>(steps);
+  const double planned = 1.0 / static_cast<double>(steps);
+  double increment = planned, reached = 0.0;
+  std::size_t completed = 0;
+  while (completed < steps) {
+    const double next_planned = static_cast<double>(completed + 1) / static_cast<double>(steps);
+    const bool last_of_plan = reached + increment >= next_planned - 1e-12 * planned;
+    const double lambda = last_of_plan ? next_planned : reached + increment;
+    const bool final_step = last_of_plan && completed + 1 == steps;
     lag.set_load_factor(lambda);
     for (std::size_t k = 0; k < rows; ++k)
-      lag.set_row_target(k, step == steps ? to[k] : from[k] + lambda * (to[k] - from[k]));
-    newton(lag, z, options, state);
+      lag.set_row_target(k, final_step ? to[k] : from[k] + lambda * (to[k] - from[k]));
+    const VectorXd converged = z;
+    try {
+      newton(lag, z, options, state);
+    } catch (const SolverError& error) {
+      if (increment <= planned * kMinLoadFraction)
+        throw SolverError(error.method(),
+                          error.message() + ", at load factor " + format_value(lambda) + " after " +
+                              std::to_string(kMaxHalvings) + " halvings of the load step",
+                          error.iterations(), error.residual());
+      z = converged;
+      increment *= 0.5;
+      continue;
+    }
+    reached = lambda;
+    if (last_of_plan) {
+      ++completed;
+      increment = planned;
+    }
   }
   PlanarRodSolution sol = fill_solution(lag, z);
   sol.iterations = state.iterations;

@@ -687,6 +687,27 @@ TEST(Elastica2dValidation, BadInputThrowsInputErrorNamingTheField) {
   EXPECT_EQ(e2::scheme_from_id("polygon"), Scheme::Polygon);
 }
 
+TEST(Elastica2dLoadSteps, AFailedLoadStepIsHalvedUntilNewtonConverges) {
+  // A cantilever at P L^2/EI = 100 (L = 1.7, EI = 2.3) in ONE planned step: Newton from the straight
+  // rod fails, the halved steps reach the same equilibrium as 64 small planned steps do.
+  e2::Problem p;
+  p.length = 1.7;
+  p.bending_stiffness = [](double) { return 2.3; };
+  p.start.support = Support::Clamped;
+  p.end.load.force_y = -100.0 * 2.3 / (1.7 * 1.7);
+  for (Scheme scheme : {Scheme::Polygon, Scheme::Arcs}) {
+    e2::SolverOptions one_step, many_steps;
+    many_steps.load_steps = 64;
+    const auto halved = e2::solve_static(p, {scheme, 32}, one_step);
+    const auto planned = e2::solve_static(p, {scheme, 32}, many_steps);
+    EXPECT_LE(halved.residual, one_step.tolerance);
+    EXPECT_GT(halved.iterations, 50U);  // more than one step's worth: the step was subdivided
+    EXPECT_NEAR(halved.y.back(), planned.y.back(), 1e-9);
+    EXPECT_NEAR(halved.x.back(), planned.x.back(), 1e-9);
+    EXPECT_LT(halved.y.back(), -1.5);  // hanging nearly straight down (tip y / L < -0.88)
+  }
+}
+
 TEST(Elastica2dFailure, NewtonFailureThrowsSolverErrorWithIterationsAndResidual) {
   e2::SolverOptions o;
   o.max_iterations = 2;  // the column needs ~5 iterations
@@ -694,9 +715,13 @@ TEST(Elastica2dFailure, NewtonFailureThrowsSolverErrorWithIterationsAndResidual)
     e2::solve_static(pinned_column(kColumnLoad), {Scheme::Polygon, 32}, o, first_mode(1.0));
     FAIL() << "expected SolverError";
   } catch (const rodvv::SolverError& e) {
-    EXPECT_EQ(e.iterations(), 2U);
+    // The planned step and its 10 halvings (solve_static.hpp) each stop at max_iterations: 11 x 2
+    // iterations, all counted, and the message names the load factor reached.
+    EXPECT_EQ(e.iterations(), 22U);
     EXPECT_GT(e.residual(), o.tolerance);
     EXPECT_EQ(e.method(), "elastica2d-polygon");
+    EXPECT_NE(std::string(e.what()).find("at load factor 0.0009765625 after 10 halvings"), std::string::npos)
+        << e.what();
   }
   // A bent free-free rod without loads: rigid motions make the KKT matrix singular (or, if round-off
   // leaves a tiny pivot, Newton cannot reduce the residual): SolverError either way.

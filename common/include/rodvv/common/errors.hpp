@@ -24,11 +24,14 @@ class SolverError : public std::runtime_error {
   SolverError(const std::string& method, const std::string& message, std::size_t iterations,
               double residual);
   const std::string& method() const noexcept { return method_; }
+  // The failure alone, without the method, iterations and residual that what() adds.
+  const std::string& message() const noexcept { return message_; }
   std::size_t iterations() const noexcept { return iterations_; }
   double residual() const noexcept { return residual_; }
 
  private:
   std::string method_;
+  std::string message_;
   std::size_t iterations_;
   double residual_;
 };

@@ -10,7 +10,10 @@
 // Load stepping: with load_steps = K, the dead loads and the potential are scaled by
 // lambda_k = k / K and every prescribed end position moves linearly from the initial guess's value
 // to the prescribed one (displacement stepping); each step starts from the previous solution.
-// Prescribed angles are imposed at their full value from the start.
+// Prescribed angles are imposed at their full value from the start. A step whose Newton solve fails
+// is retried from the last converged state in two halves, recursively down to 2^-10 of a planned
+// step (then SolverError, naming the load factor reached); a problem that converges in its planned
+// steps takes exactly those steps.
 // Branch selection: at a bifurcation (a column beyond the Euler load) Newton converges to the branch
 // nearest the initial guess, e.g. theta(s) = theta_amp cos(pi s / L) for the first mode of a
 // pinned-pinned column; stepping needs a guess in the first step's basin. To follow a branch in
