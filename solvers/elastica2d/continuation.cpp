@@ -30,16 +30,25 @@ struct Tangent {
   double lambda = 0.0;
 };
 
+// The arc-length metric's inner product on z, in the problem's own units: sum a_i b_i / u_i^2 with
+// u = unknown_scales (newton.hpp), so that the steps do not depend on L and EI.
+struct Metric {
+  VectorXd inverse_square_scale;
+  double dot(const VectorXd& a, const VectorXd& b) const {
+    return a.cwiseProduct(b).cwiseProduct(inverse_square_scale).sum();
+  }
+};
+
 // Corrector: Newton on the bordered system from the predicted (z, lambda). Returns false (state
 // unchanged) if it does not converge within options.max_iterations or hits a singular matrix.
-bool correct(DiscreteLagrangian& lag, const SolverOptions& options, const VectorXd& z_k,
-             double lambda_k, const Tangent& t, double w, double ds, VectorXd& z, double& lambda,
-             detail::NewtonState& state, std::size_t& used) {
+bool correct(DiscreteLagrangian& lag, const SolverOptions& options, const Metric& metric,
+             const VectorXd& residual_scale, const VectorXd& z_k, double lambda_k, const Tangent& t, double w,
+             double ds, VectorXd& z, double& lambda, detail::NewtonState& state, std::size_t& used) {
   for (std::size_t it = 0; it <= options.max_iterations; ++it) {
     lag.set_load_factor(lambda);
     const VectorXd f = lag.gradient(z);
-    const double g = w * t.z.dot(z - z_k) + t.lambda * (lambda - lambda_k) - ds;
-    const double r = f.lpNorm<Eigen::Infinity>();
+    const double g = w * metric.dot(t.z, z - z_k) + t.lambda * (lambda - lambda_k) - ds;
+    const double r = f.cwiseQuotient(residual_scale).lpNorm<Eigen::Infinity>();  // as in newton()
     if (!std::isfinite(r)) return false;
     state.residual = r;
     if (r <= options.tolerance && std::abs(g) <= options.tolerance * std::max(1.0, ds)) {
@@ -50,9 +59,9 @@ bool correct(DiscreteLagrangian& lag, const SolverOptions& options, const Vector
     if (!state.lu.factorize(lag.hessian(z))) return false;
     const VectorXd a = state.lu.solve(-f);
     const VectorXd b = state.lu.solve(-load_derivative(lag, z, lambda));
-    const double denominator = w * t.z.dot(b) + t.lambda;
+    const double denominator = w * metric.dot(t.z, b) + t.lambda;
     if (!(std::abs(denominator) > 0.0)) return false;
-    const double dlambda = -(g + w * t.z.dot(a)) / denominator;
+    const double dlambda = -(g + w * metric.dot(t.z, a)) / denominator;
     z += a + dlambda * b;
     lambda += dlambda;
     ++state.iterations;
@@ -107,6 +116,8 @@ std::vector<BranchPoint> trace_branch(const Problem& problem, const Discretisati
   record(lambda);
 
   const double w = 1.0 / static_cast<double>(z.size());
+  const Metric metric{detail::unknown_scales(lag).cwiseAbs2().cwiseInverse()};
+  const VectorXd residual_scale = detail::residual_scales(lag);
   // Initial tangent: (dz/dlambda, 1), normalised in the metric w |dz|^2 + dlambda^2.
   Tangent t;
   if (!state.lu.factorize(lag.hessian(z)))
@@ -115,7 +126,7 @@ std::vector<BranchPoint> trace_branch(const Problem& problem, const Discretisati
   t.z = state.lu.solve(-load_derivative(lag, z, lambda));
   t.lambda = 1.0;
   {
-    const double norm = std::sqrt(w * t.z.squaredNorm() + 1.0);
+    const double norm = std::sqrt(w * metric.dot(t.z, t.z) + 1.0);
     t.z *= direction / norm;
     t.lambda = direction / norm;
   }
@@ -125,7 +136,7 @@ std::vector<BranchPoint> trace_branch(const Problem& problem, const Discretisati
     VectorXd z_new = z + ds * t.z;
     double lambda_new = lambda + ds * t.lambda;
     std::size_t used = 0;
-    if (!correct(lag, options, z, lambda, t, w, ds, z_new, lambda_new, state, used)) {
+    if (!correct(lag, options, metric, residual_scale, z, lambda, t, w, ds, z_new, lambda_new, state, used)) {
       ds *= 0.5;
       if (ds < continuation.min_step)
         throw SolverError(method,
@@ -138,7 +149,7 @@ std::vector<BranchPoint> trace_branch(const Problem& problem, const Discretisati
     Tangent next;
     next.z = (z_new - z) / ds;
     next.lambda = (lambda_new - lambda) / ds;
-    const double norm = std::sqrt(w * next.z.squaredNorm() + next.lambda * next.lambda);
+    const double norm = std::sqrt(w * metric.dot(next.z, next.z) + next.lambda * next.lambda);
     next.z /= norm;
     next.lambda /= norm;
     const bool passed = direction * (lambda_new - continuation.final_load_factor) >= 0.0;

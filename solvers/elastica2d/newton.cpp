@@ -82,12 +82,33 @@ VectorXd initial_state(const DiscreteLagrangian& lag, const Problem& problem,
   return z;
 }
 
+VectorXd residual_scales(const DiscreteLagrangian& lag) {
+  const double L = lag.problem().length, EI = lag.node_stiffness(0);
+  VectorXd scale = VectorXd::Ones(static_cast<Eigen::Index>(lag.size()));
+  const std::size_t n = lag.elements();
+  for (std::size_t i = 0; i <= n; ++i) scale[lag.x(i)] = scale[lag.y(i)] = EI / (L * L);
+  for (std::size_t j = 0; j < lag.angle_count(); ++j) scale[lag.angle(j)] = EI / L;
+  for (std::size_t e = 0; e < n; ++e) scale[lag.nx(e)] = scale[lag.ny(e)] = L;
+  for (std::size_t k = 0; k < lag.rows().size(); ++k) {
+    const std::size_t slot = (lag.rows()[k].dof - lag.x(0)) % 5;  // 0, 1: x, y; 2: an angle
+    scale[lag.row_multiplier(k)] = slot == 2 ? 1.0 : L;
+  }
+  return scale;
+}
+
+VectorXd unknown_scales(const DiscreteLagrangian& lag) {
+  const double energy = lag.node_stiffness(0) / lag.problem().length;  // EI/L
+  return residual_scales(lag).cwiseInverse() * energy;
+}
+
 void newton(const DiscreteLagrangian& lag, VectorXd& z, const SolverOptions& options,
             NewtonState& state) {
   const std::string method = method_name(lag.scheme());
+  const VectorXd scale = residual_scales(lag), unknown = unknown_scales(lag);
+  const auto scaled = [&scale](const VectorXd& f) { return f.cwiseQuotient(scale).eval(); };
   for (std::size_t it = 0;; ++it) {
     const VectorXd f = lag.gradient(z);
-    const double r = f.lpNorm<Eigen::Infinity>();
+    const double r = scaled(f).lpNorm<Eigen::Infinity>();
     state.residual = r;
     if (!std::isfinite(r))
       throw SolverError(method, "KKT residual became non-finite", state.iterations, r);
@@ -106,17 +127,20 @@ void newton(const DiscreteLagrangian& lag, VectorXd& z, const SolverOptions& opt
     ++state.iterations;
     if (!dz.allFinite())
       throw SolverError(method, "Newton step is non-finite", state.iterations, r);
-    if (dz.lpNorm<Eigen::Infinity>() <= 64.0 * kEps * (1.0 + z.lpNorm<Eigen::Infinity>())) {
+    // In the problem's own units (unknown_scales), like the residual.
+    if (dz.cwiseQuotient(unknown).lpNorm<Eigen::Infinity>() <=
+        64.0 * kEps * (1.0 + z.cwiseQuotient(unknown).lpNorm<Eigen::Infinity>())) {
       z += dz;  // already at round-off: the residual cannot be reduced further
-      state.residual = lag.gradient(z).lpNorm<Eigen::Infinity>();
+      state.residual = scaled(lag.gradient(z)).lpNorm<Eigen::Infinity>();
       return;
     }
-    // Backtracking on the merit ||grad L||_2.
-    const double merit = f.norm();
+    // Backtracking on the merit ||D grad L||_2 (D = 1/scale): the Newton step is a descent
+    // direction for any such diagonal weighting.
+    const double merit = scaled(f).norm();
     double alpha = 1.0;
     for (;;) {
       const VectorXd trial = z + alpha * dz;
-      const double m = lag.gradient(trial).norm();
+      const double m = scaled(lag.gradient(trial)).norm();
       if (std::isfinite(m) && m <= (1.0 - kArmijo * alpha) * merit) {
         z = trial;
         break;

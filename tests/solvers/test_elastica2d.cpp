@@ -708,6 +708,35 @@ TEST(Elastica2dLoadSteps, AFailedLoadStepIsHalvedUntilNewtonConverges) {
   }
 }
 
+TEST(Elastica2dUnits, TheSameCantileverConvergesAlikeAtAnyLengthAndStiffness) {
+  // Newton converges on the residual in the problem's own units (newton.hpp): a cantilever at
+  // P L^2/EI = 2 posed at (L, EI) = (1, 1), (1e6, 1e-6) and (1e-6, 1e12) gives the same shape in
+  // units of L, to the Newton tolerance. Before, L = 1e3 already failed (an absolute 1e-10 on
+  // ||grad L|| that round-off in positions ~L cannot reach).
+  auto solve = [](double L, double EI, Scheme scheme) {
+    e2::Problem p;
+    p.length = L;
+    p.bending_stiffness = [EI](double) { return EI; };
+    p.start.support = Support::Clamped;
+    p.end.load.force_y = -2.0 * EI / (L * L);
+    e2::SolverOptions o;
+    o.load_steps = 2;
+    return e2::solve_static(p, {scheme, 24}, o);
+  };
+  for (Scheme scheme : {Scheme::Polygon, Scheme::Arcs}) {
+    const auto unit = solve(1.0, 1.0, scheme);
+    for (const auto& [L, EI] : {std::pair{1e6, 1e-6}, std::pair{1e-6, 1e12}}) {
+      const auto scaled = solve(L, EI, scheme);
+      EXPECT_LE(scaled.residual, 1e-10);
+      for (std::size_t i = 0; i < unit.nodes(); ++i) {
+        EXPECT_NEAR(scaled.x[i] / L, unit.x[i], 1e-9) << "L = " << L << ", node " << i;
+        EXPECT_NEAR(scaled.y[i] / L, unit.y[i], 1e-9) << "L = " << L << ", node " << i;
+        EXPECT_NEAR(scaled.force_y[i] * L * L / EI, unit.force_y[i], 1e-9) << "L = " << L << ", node " << i;
+      }
+    }
+  }
+}
+
 TEST(Elastica2dFailure, NewtonFailureThrowsSolverErrorWithIterationsAndResidual) {
   e2::SolverOptions o;
   o.max_iterations = 2;  // the column needs ~5 iterations

@@ -18,8 +18,10 @@
 // nearest the initial guess, e.g. theta(s) = theta_amp cos(pi s / L) for the first mode of a
 // pinned-pinned column; stepping needs a guess in the first step's basin. To follow a branch in
 // the load, use trace_branch (continuation.hpp, pseudo-arc-length).
-// Convergence: ||grad L||_inf <= tolerance, or a Newton step already at round-off
-// (||dz||_inf <= 64 eps (1 + ||z||_inf)), whichever comes first.
+// Convergence: ||D grad L||_inf <= tolerance, or a Newton step already at round-off
+// (||dz / u||_inf <= 64 eps (1 + ||z / u||_inf)), whichever comes first; D and u put the residual
+// and the unknowns in the problem's own units (length L, stiffness EI(0); newton.hpp), so that a
+// rod converges alike at any L and EI (at L = EI = 1, D = u = 1).
 //
 // Output (PlanarRodSolution, common/planar_rod.hpp), at nodes s_i = i h:
 //   x, y         node positions (arcs: exact arc ends);
@@ -39,7 +41,7 @@
 //   shear_force, edge_shear_force  n.N (N = e_z x t) at the same places as the axial force;
 //   axial_stiffness, shear_stiffness  EA and GA of the problem (strains: n.t / EA, n.N / GA);
 //   potential    V(x_i, y_i) (0 without a potential);
-//   iterations   Newton iterations summed over all load steps; residual = final ||grad L||_inf.
+//   iterations   Newton iterations summed over all load steps; residual = final ||D grad L||_inf.
 // Failure: rodvv::SolverError (Newton iterations, last residual) when Newton does not reach the
 // tolerance within max_iterations in a step, the line search fails, or the KKT matrix is singular.
 #include <cstddef>
@@ -52,7 +54,7 @@
 namespace rodvv::solvers::elastica2d {
 
 struct SolverOptions {
-  double tolerance = 1e-10;         // absolute, on ||grad L||_inf (problem units); in (0, 1)
+  double tolerance = 1e-10;         // on ||D grad L||_inf, in the problem's own units; in (0, 1)
   std::size_t max_iterations = 50;  // Newton iterations per load step, >= 1
   std::size_t load_steps = 1;       // >= 1
 };
