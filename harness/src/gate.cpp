@@ -100,7 +100,7 @@ GateResult evaluate_bound(const GateSpec& gate, const SweepResult& sweep) {
   const bool upper = gate.kind == GateKind::UpperBound;
   const double constant = upper ? gate.upper : gate.lower;
   const auto bound_at = [&](const LevelResult& level) {
-    return gate.bound_order > 0.0 ? constant * std::pow(level.h, gate.bound_order) : constant;
+    return gate.bound_order != 0.0 ? constant * std::pow(level.h, gate.bound_order) : constant;
   };
   if (sweep.levels.empty()) {
     result.reason = "no levels were run";
@@ -135,7 +135,7 @@ GateResult evaluate_bound(const GateSpec& gate, const SweepResult& sweep) {
     }
   }
   result.measured = *worst;
-  if (gate.bound_order > 0.0) (upper ? result.upper : result.lower) = worst_bound;
+  if (gate.bound_order != 0.0) (upper ? result.upper : result.lower) = worst_bound;
   result.passed = upper ? *worst <= worst_bound : *worst >= worst_bound;
   result.reason = fmt::format("{} {:.3e} at {} = {:g} {} {} {:.3e}",
                               gate.scope == GateScope::AllLevels ? "worst value" : "value", *worst,

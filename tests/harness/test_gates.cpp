@@ -66,6 +66,18 @@ TEST(UpperBoundGate, AllLevelsScopeTakesTheWorstLevel) {
   EXPECT_DOUBLE_EQ(*result.gates[0].measured, 0.01);  // coarsest level 0.1^2
 }
 
+TEST(UpperBoundGate, NegativeOrderBoundsAQuantityThatGrowsUnderRefinement) {
+  // e = 3 h^-1 (round-off-like growth: 30 ... 240): C h^-1 with C = 3.03 holds at every level,
+  // C = 2.97 fails at every level, and a constant bound of 3.03 (order 0) fails.
+  auto result = sweep_with(synthetic_case(-1.0, 3.0),
+                           {scaled_upper_bound_gate("error", 3.03, -1.0, GateScope::AllLevels, "follows N"),
+                            scaled_upper_bound_gate("error", 2.97, -1.0, GateScope::AllLevels, "too tight"),
+                            upper_bound_gate("error", 3.03, GateScope::AllLevels, "constant")});
+  EXPECT_TRUE(result.gates[0].passed) << result.gates[0].reason;
+  EXPECT_FALSE(result.gates[1].passed);
+  EXPECT_FALSE(result.gates[2].passed);
+}
+
 TEST(LowerBoundGate, FailsWhenValueIsBelowBound) {
   auto result = sweep_with(synthetic_case(2.0),
                            {lower_bound_gate("error", 1e-4, GateScope::AllLevels, "must exceed"),

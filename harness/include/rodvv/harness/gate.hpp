@@ -5,7 +5,8 @@
 //    theory is a failure too, since it means the test is not measuring what it claims.
 //  - UpperBound / LowerBound: the gated value of a metric (its error where it has one, else its
 //    computed value) at the finest level, or at every level, lies below / above a bound. A bound
-//    with bound_order p > 0 is C h^p (C = `upper`), so it follows the level it is checked at.
+//    with bound_order p != 0 is C h^p (C = `upper`), so it follows the level it is checked at (p < 0:
+//    a quantity allowed to grow under refinement, such as round-off, C N^|p| for h = 1/N).
 //    A bound measured at a case's default parameters (`measured`) does not apply to other
 //    parameters: the sweep skips it there and records that it did.
 // Each gate evaluates to a GateResult with a one-line reason saying what was measured against what.
@@ -27,7 +28,7 @@ struct GateSpec {
   double lower = -std::numeric_limits<double>::infinity();  // window [lower, upper]; a bound gate uses one side
   double upper = std::numeric_limits<double>::infinity();
   GateScope scope = GateScope::FinestLevel;  // bound gates only
-  double bound_order = 0.0;  // bound gates: 0 = constant bound, p > 0 = bound x h^p
+  double bound_order = 0.0;  // bound gates: 0 = constant bound, p != 0 = bound x h^p
   bool measured = false;     // the bound was measured at the case's default parameters
   std::string rationale;  // where the bound comes from (theory, a measured floor times a factor)
 };
