@@ -637,7 +637,7 @@ Case seed_collision_case() {
 // The motion to simulate is set by the parameters (a slow impact, v0 = 1e-12, flies gap/v0 = 1e11
 // before it reaches the wall), and every step has dt <= cfl dx / c. A case refuses (exit 2) the
 // parameters whose run at its finest default or extended level cannot finish within the solver's
-// work budget (eu::Settings::max_cell_updates, about 15 minutes), naming the time span and what
+// work budget (eu::Settings::max_cell_updates, about 3 minutes), naming the time span and what
 // sets it; a finer level asked for with `rodvv sweep --levels` is refused by the solver as a level
 // failure at its first step.
 struct LeastWork {
