@@ -4,8 +4,9 @@
 // smallest eigenvalue of the constrained Hessian at the loaded equilibrium crosses zero (the rod
 // flips sideways and twists). The classical gamma neglects the in-plane prebuckling deflection
 // (EI_strong -> infinity); its correction is O(EI_weak / EI_strong), so the case finds the critical
-// load at two stiffness ratios r = EI_weak/EI_strong (r0 and 2 r0) and extrapolates linearly to
-// r = 0 (leaving O(r0^2) = 1e-6 at the default r0 = 1e-3). Anisotropic and non-unit throughout:
+// load at three stiffness ratios r = EI_weak/EI_strong (r0, 2 r0, 3 r0) and extrapolates
+// quadratically to r = 0 (the linear extrapolation's O(r0^2) remainder was 1.6e-5 relative at the
+// default r0 = 1e-3, measured; lateral_torsional_problem.cpp). Anisotropic and non-unit throughout:
 // EI_weak != GJ, tilted clamp.
 #include "../case_builder.hpp"
 #include "../lateral_torsional_problem.hpp"
@@ -50,12 +51,12 @@ LevelOutput run(const Parameters& p, double level) {
 void add_lateral_torsional(Registry& registry) {
   const double h = 1.0 / 64.0;
   std::vector<GateSpec> gates{order_gate("critical_load_relative", 2.0, "vertex curvature and twist: O(h^2) (measured)"),
-                              measured_bound("critical_load_relative", 1.0703e-4, h, 2.0)};
+                              measured_bound("critical_load_relative", 1.2352e-4, h, 2.0)};
   Case c = make_case(
       "rod3d",
       {"rod3d/lateral-torsional", "Lateral-torsional buckling of a cantilever: critical tip load from the linearised Hessian",
        "Cantilever (tilted clamp) with EI_strong = EI_weak / r >> EI_weak and GJ, dead tip load at the centroid bending "
-       "it about the stiff axis; P_cr where the stability eigenvalue crosses zero, at r = r0 and 2 r0, extrapolated to r = 0.",
+       "it about the stiff axis; P_cr where the stability eigenvalue crosses zero, at r = r0, 2 r0 and 3 r0, extrapolated (quadratically) to r = 0.",
        "P_cr = gamma sqrt(EI_weak GJ) / L^2, gamma = 2 j_{-1/4,1} = 4.0125993435789 (references/twisted_rod.hpp)",
        "Michell 1899; Prandtl 1899; Timoshenko & Gere 1961; PRIOR_ART.md §4.5", kMethod, "rod-3d/lateral-torsional"},
       lateral_torsional_parameters("m1"),
