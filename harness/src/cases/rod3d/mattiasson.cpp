@@ -2,6 +2,7 @@
 // the nodal 3-D rod in a tilted frame with EI1 != EI2 != GJ, so that a wrong bending axis, a
 // dimensional slip or a frame mistake shows (PHYSICS.md §3.5, PRIOR_ART.md §4.1).
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "rodvv/common/errors.hpp"
@@ -95,15 +96,17 @@ void add_mattiasson(Registry& registry) {
       measured_bound("tip_edge_angle", 1.5157e-5, h, 2.0),
       measured_bound("H_mean", 1.3570e-5, h, 2.0),
       measured_bound("H_spread", 1.6414e-5, h, 2.0),
-      // Planar loading in a tilted frame: no out-of-plane drift beyond the solve's accuracy. It grows
-      // steeply with N: measured 1.22e-12, 3.59e-11, 2.40e-10, 6.39e-9, 1.99e-7 at N = 16 ... 256, i.e.
-      // <= 1.2e-18 N^5 (N^4.96 from 128 to 256; the Newton stop times the condition of the nodal
-      // statics, not established). Bound 10 x that law at every level (h = 1/N); a bound of 1e-7 at
-      // the finest level failed the extended sweep (1.99e-7 at N = 256).
+      // Planar loading in a tilted frame: no out-of-plane drift but round-off, amplified by the
+      // conditioning: the vertex forces carry ~N^3 eps (edge vectors are differences of positions;
+      // statics.cpp) and the softest out-of-plane mode has a stiffness ~1/N, so the drift goes as
+      // eps N^4. Measured 1.22e-12, 3.59e-11, 2.40e-10, 6.39e-9, 1.99e-7 at N = 16 ... 256, i.e.
+      // 0.05 ... 0.21 eps N^4. Bound eps N^4 (h = 1/N) at every level, >= 4.8x the measurements. (A
+      // bound of 1e-7 at the finest level failed the extended sweep: 1.99e-7 at N = 256.)
       [] {
-        GateSpec gate = scaled_upper_bound_gate("out_of_plane", 1.2e-17, -5.0, GateScope::AllLevels,
-                                                "planar loading: no drift beyond the solve's accuracy, measured "
-                                                "<= 1.2e-18 N^5 for N = 16 ... 256; x 10");
+        GateSpec gate = scaled_upper_bound_gate("out_of_plane", std::numeric_limits<double>::epsilon(), -4.0,
+                                                GateScope::AllLevels,
+                                                "planar loading: round-off drift only, ~eps N^4 (measured "
+                                                "0.05-0.21 eps N^4 for N = 16 ... 256)");
         gate.measured = true;
         return gate;
       }(),
