@@ -32,6 +32,19 @@ Solution through_a_file(const Case& c, const Parameters& parameters, double leve
   return solution_files::parse_solution(solution_files::format_solution(file), "level.json", ".").solution;
 }
 
+// The InputError message with which check_solutions refuses `solutions`; a test failure (and "")
+// when it accepts them.
+std::string refusal(const Case& c, const Parameters& p, const std::vector<LevelSolution>& solutions,
+                    const std::string& what) {
+  try {
+    check_solutions(c, p, solutions, {});
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  ADD_FAILURE() << what << " accepted";
+  return "";
+}
+
 std::vector<LevelSolution> solutions_of(const Case& c, const Parameters& parameters,
                                         const std::vector<double>& levels) {
   std::vector<LevelSolution> solutions;
@@ -103,12 +116,9 @@ TEST(Check, PinnedColumnNeedsAMidspanNode) {
   const Case& c = *default_registry().find("elastica/pinned-pinned-60/arcs");
   const Parameters& p = c.info.parameters;
   EXPECT_NO_THROW(check_solutions(c, p, solutions_of(c, p, {32, 64, 128}), {}));
-  try {
-    check_solutions(c, p, solutions_of(c, p, {33, 65, 129}), {});
-    ADD_FAILURE() << "an odd N accepted";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("N33: y_M and kappa_M are taken at the midspan node"), std::string::npos)
-        << error.what();
+  {
+    const std::string message = refusal(c, p, solutions_of(c, p, {33, 65, 129}), "an odd N");
+    EXPECT_NE(message.find("N33: y_M and kappa_M are taken at the midspan node"), std::string::npos) << message;
   }
 }
 
@@ -169,33 +179,24 @@ TEST(Check, RefusesWhatItCannotCheck) {
   auto twice = solutions;
   twice[1] = twice[0];  // the same level twice (and a consistent node count, so that this is what is refused)
   twice[1].source = "again";
-  try {
-    check_solutions(c, p, twice, {});
-    ADD_FAILURE() << "two solutions at one level accepted";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("are both at N = 32: one solution per level"), std::string::npos)
-        << error.what();
+  {
+    const std::string message = refusal(c, p, twice, "two solutions at one level");
+    EXPECT_NE(message.find("are both at N = 32: one solution per level"), std::string::npos) << message;
   }
   auto fractional = solutions;
   fractional[0].level = 32.5;
   EXPECT_THROW(check_solutions(c, p, fractional, {}), InputError);
   auto miscounted = solutions;
   miscounted[0].level = 33;  // 33 elements declared, 32 in the rod
-  try {
-    check_solutions(c, p, miscounted, {});
-    ADD_FAILURE() << "a node count that disagrees with N accepted";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("N = 33 elements, but the rod has 33 nodes"), std::string::npos)
-        << error.what();
+  {
+    const std::string message = refusal(c, p, miscounted, "a node count that disagrees with N");
+    EXPECT_NE(message.find("N = 33 elements, but the rod has 33 nodes"), std::string::npos) << message;
   }
   auto trajectory = solutions;
   trajectory[0].solution = Trajectory{};
-  try {
-    check_solutions(c, p, trajectory, {});
-    ADD_FAILURE() << "a trajectory accepted by a planar case";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("measures a planar_rod solution; got a trajectory"), std::string::npos)
-        << error.what();
+  {
+    const std::string message = refusal(c, p, trajectory, "a trajectory for a planar case");
+    EXPECT_NE(message.find("measures a planar_rod solution; got a trajectory"), std::string::npos) << message;
   }
   EXPECT_THROW(user_bound(c, "tip_z", 1.0), InputError);
   EXPECT_THROW(user_bound(c, "tip_w", -1.0), InputError);
@@ -211,12 +212,9 @@ TEST(Check, ATrajectoryMustCoverTheCasesHorizon) {
   auto& trajectory = std::get<Trajectory>(solution);
   const std::size_t half = trajectory.size() / 2;
   for (auto* values : {&trajectory.t, &trajectory.theta, &trajectory.theta_dot}) values->resize(half);
-  try {
-    check_solutions(c, p, {{"short.json", 0.05, solution, "x"}}, {});
-    ADD_FAILURE() << "a half trajectory accepted";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("short.json: the trajectory spans t = 0 .."), std::string::npos)
-        << error.what();
+  {
+    const std::string message = refusal(c, p, {{"short.json", 0.05, solution, "x"}}, "a half trajectory");
+    EXPECT_NE(message.find("short.json: the trajectory spans t = 0 .."), std::string::npos) << message;
   }
   EXPECT_THROW(check_solutions(c, p, solutions_of(c, p, {0.1, 0.05, 0.025}), {}, 0.0), InputError);  // --order 0
 }
