@@ -115,7 +115,7 @@ SweepResult check_solutions(const Case& c, const Parameters& parameters, std::ve
   result.analyses = analyse_levels(c, result.levels);
 
   for (const GateSpec& gate : c.gates) {
-    if (gate.kind != GateKind::Order) {
+    if (gate.kind != GateKind::Order && !gate.relative) {
       result.skipped_gates.push_back(gate.name + ": a bound on rodvv's own solver, not a property of the problem");
     } else if (!measured_anywhere(result.levels, gate.metric)) {
       result.skipped_gates.push_back(gate.name + ": the solutions lack the fields this metric needs");
@@ -123,6 +123,9 @@ SweepResult check_solutions(const Case& c, const Parameters& parameters, std::ve
       result.skipped_gates.push_back(
           fmt::format("{}: an order needs solutions at {} levels or more, got {}", gate.name, c.fit_levels,
                       solutions.size()));
+    } else if (gate.relative) {
+      // The order's magnitude beside it (a property of any solver's solutions, not a bound on rodvv's).
+      result.gates.push_back(evaluate_gate(gate, result));
     } else if (stated_order) {
       result.gates.push_back(evaluate_gate(
           order_gate(gate.metric, *stated_order, fmt::format("the order stated for the solver (--order {:g})",

@@ -1,5 +1,6 @@
 #include "rodvv/harness/gate.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -55,7 +56,36 @@ GateSpec scaled_upper_bound_gate(std::string metric, double constant, double ord
   return gate;
 }
 
+GateSpec resolution_gate(std::string metric) {
+  GateSpec gate = upper_bound_gate(std::move(metric), kResolvedFraction, GateScope::FinestLevel,
+                                   "asymptotic range: an observed order is evidence only where the error is small "
+                                   "beside the quantity (gate.hpp, kResolvedFraction)");
+  gate.name = fmt::format("{} resolved: error <= {:g} x its size at the finest level", gate.metric,
+                          kResolvedFraction);
+  gate.relative = true;
+  return gate;
+}
+
+void add_resolution_gates(std::vector<GateSpec>& gates) {
+  std::vector<std::string> ordered, resolved;
+  for (const GateSpec& gate : gates) {
+    if (gate.kind == GateKind::Order) ordered.push_back(gate.metric);
+    if (gate.relative) resolved.push_back(gate.metric);
+  }
+  for (const std::string& metric : ordered)
+    if (std::find(resolved.begin(), resolved.end(), metric) == resolved.end()) {
+      gates.push_back(resolution_gate(metric));
+      resolved.push_back(metric);
+    }
+}
+
 double gated_value(const MetricSample& sample) { return sample.error ? *sample.error : sample.computed; }
+
+std::optional<double> metric_size(const MetricSample& sample) {
+  const double size = sample.scale ? *sample.scale : sample.reference ? std::abs(*sample.reference) : 0.0;
+  if (size > 0.0 && std::isfinite(size)) return size;
+  return std::nullopt;
+}
 
 namespace {
 
@@ -119,7 +149,17 @@ GateResult evaluate_bound(const GateSpec& gate, const SweepResult& sweep) {
                                   level.failure ? " (the level failed: " + *level.failure + ")" : "");
       return result;
     }
-    const double value = gated_value(found->second);
+    double value = gated_value(found->second);
+    if (gate.relative) {
+      const std::optional<double> size = metric_size(found->second);
+      if (!size) {
+        result.reason = fmt::format("metric '{}' has no size at level {:g}: its reference is 0 or absent and the case "
+                                    "states no scale, so its relative error is unknown",
+                                    gate.metric, level.level);
+        return result;
+      }
+      value = std::abs(value) / *size;
+    }
     if (!std::isfinite(value)) {
       result.measured.reset();
       result.reason = fmt::format("metric '{}' is not finite at level {:g}", gate.metric, level.level);
@@ -138,7 +178,9 @@ GateResult evaluate_bound(const GateSpec& gate, const SweepResult& sweep) {
   if (gate.bound_order != 0.0) (upper ? result.upper : result.lower) = worst_bound;
   result.passed = upper ? *worst <= worst_bound : *worst >= worst_bound;
   result.reason = fmt::format("{} {:.3e} at {} = {:g} {} {} {:.3e}",
-                              gate.scope == GateScope::AllLevels ? "worst value" : "value", *worst,
+                              gate.relative ? "relative error"
+                              : gate.scope == GateScope::AllLevels ? "worst value" : "value",
+                              *worst,
                               sweep.info.resolution.name, worst_level,
                               result.passed ? "within" : "violates", upper ? "<=" : ">=", worst_bound);
   return result;

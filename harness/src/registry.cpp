@@ -6,11 +6,13 @@
 #include <stdexcept>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/harness/gate.hpp"
 
 namespace rodvv::harness {
 
 void Registry::add(Case c) {
   if (find(c.info.name)) throw std::logic_error("duplicate case name: " + c.info.name);
+  add_resolution_gates(c.gates);  // every order gate gets its magnitude beside it, at any parameters
   cases_.push_back(std::move(c));
 }
 

@@ -91,7 +91,8 @@ json to_json(const harness::LevelResult& level) {
   for (const auto& [name, sample] : level.metrics)
     metrics[name] = json{{"computed", number(sample.computed)},
                          {"reference", number(sample.reference)},
-                         {"error", number(sample.error)}};
+                         {"error", number(sample.error)},
+                         {"scale", number(sample.scale)}};
   json series = json::array();
   for (const auto& s : level.series)
     series.push_back(json{{"name", s.name},
@@ -394,6 +395,8 @@ harness::LevelResult read_level(const Reader& r, const json& j, const std::strin
     sample.computed = r.number(value, p, "computed");
     sample.reference = r.optional_number(value, p, "reference");
     sample.error = r.optional_number(value, p, "error");
+    // Absent from files written before sizes were recorded.
+    if (value.contains("scale")) sample.scale = r.optional_number(value, p, "scale");
     level.metrics.emplace(name, sample);
   }
   const json& series = r.array(j, path, "series");

@@ -80,14 +80,16 @@ TEST(Check, RodvvSolutionsThroughFilesReproduceTheSweepExactly) {
       EXPECT_EQ(other.error, sample.error) << name;
     }
   }
-  // The order gates apply and pass; the bounds measured on rodvv's solver are skipped, and said so.
-  std::size_t orders = 0;
+  // The order gates and their resolution gates apply and pass; the bounds measured on rodvv's
+  // solver are skipped, and said so.
+  std::size_t orders = 0, resolutions = 0;
   for (const auto& gate : checked.gates) {
-    EXPECT_EQ(gate.kind, GateKind::Order) << gate.name;
+    EXPECT_TRUE(gate.kind == GateKind::Order || gate.name.find(" resolved: ") != std::string::npos) << gate.name;
     EXPECT_TRUE(gate.passed) << gate.reason;
-    ++orders;
+    ++(gate.kind == GateKind::Order ? orders : resolutions);
   }
   EXPECT_EQ(orders, 4u);
+  EXPECT_EQ(resolutions, 4u);
   ASSERT_EQ(checked.skipped_gates.size(), 2u);
   EXPECT_NE(checked.skipped_gates[0].find("rodvv's own solver"), std::string::npos);
   EXPECT_NE(checked.info.method.find("rodvv check"), std::string::npos);
@@ -153,7 +155,7 @@ TEST(Check, OneSolutionGivesErrorsAndUserBoundsButNoOrders) {
   const auto order_skips = std::count_if(passed.skipped_gates.begin(), passed.skipped_gates.end(), [](const auto& s) {
     return s.find("an order needs solutions at 3 levels or more, got 1") != std::string::npos;
   });
-  EXPECT_EQ(order_skips, 4);
+  EXPECT_EQ(order_skips, 8);  // 4 orders and the resolution gate beside each
   EXPECT_FALSE(check_solutions(c, p, solutions, tight).gates[0].passed);
 }
 

@@ -1,7 +1,10 @@
 // Every gate kind passes on a correct solver and fails on a deliberately wrong one.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "rodvv/harness/gate.hpp"
+#include "rodvv/harness/registry.hpp"
 #include "rodvv/harness/sweep.hpp"
 #include "synthetic_case.hpp"
 
@@ -102,6 +105,82 @@ TEST(BoundGate, FailsOnLevelFailureAndNonFiniteValues) {
   EXPECT_FALSE(result.gates[1].passed);
   EXPECT_TRUE(result.levels.back().failure.has_value());
   EXPECT_FALSE(result.passed());
+}
+
+// ---- resolution gates: the magnitude beside every order --------------------------------------------
+
+TEST(ResolutionGate, FailsASweepThatConvergesAtTheRightOrderButResolvesNothing) {
+  // Issue 14's meaningless pass: errors 1e3 times the quantity that shrink exactly as h^2.
+  const auto unresolved = sweep_with(synthetic_case(2.0, 1e7), {order_gate("value", 2.0, "theory"), resolution_gate("value")});
+  EXPECT_TRUE(unresolved.gates[0].passed) << unresolved.gates[0].reason;
+  EXPECT_FALSE(unresolved.gates[1].passed) << unresolved.gates[1].reason;
+  EXPECT_NEAR(*unresolved.gates[1].measured, 1e7 * 0.0125 * 0.0125, 1e-6);  // error / |reference 1|
+  EXPECT_FALSE(unresolved.passed());
+  // The same sweep resolved: 1e-4 of the quantity at the finest level.
+  const auto resolved = sweep_with(synthetic_case(2.0, 0.64), {order_gate("value", 2.0, "theory"), resolution_gate("value")});
+  EXPECT_TRUE(resolved.passed()) << resolved.gates[1].reason;
+  // At the boundary: just above and just below a tenth of the quantity.
+  const double at_tenth = kResolvedFraction / (0.0125 * 0.0125);
+  EXPECT_FALSE(sweep_with(synthetic_case(2.0, 1.001 * at_tenth), {resolution_gate("value")}).passed());
+  EXPECT_TRUE(sweep_with(synthetic_case(2.0, 0.999 * at_tenth), {resolution_gate("value")}).passed());
+}
+
+TEST(ResolutionGate, AStatedScaleOverridesTheReferenceAndNoSizeIsAFailureNamingIt) {
+  Case c = synthetic_case(2.0, 100.0);  // finest error 1.5625e-2
+  // "error" has reference 0 and no stated scale: its relative error is unknown, which is not a pass.
+  const auto unknown = sweep_with(c, {resolution_gate("error")});
+  EXPECT_FALSE(unknown.passed());
+  EXPECT_NE(unknown.gates[0].reason.find("no size"), std::string::npos) << unknown.gates[0].reason;
+  const auto runner = c.run_level;
+  const auto with_scale = [runner](double scale) {
+    return [runner, scale](const Parameters& p, double h) {
+      LevelOutput output = runner(p, h);
+      output.metrics["error"].scale = output.metrics["value"].scale = scale;
+      return output;
+    };
+  };
+  c.run_level = with_scale(1.0);
+  const auto sized = sweep_with(c, {resolution_gate("error"), resolution_gate("value")});
+  EXPECT_TRUE(sized.passed());
+  EXPECT_DOUBLE_EQ(*sized.gates[0].measured, 100.0 * 0.0125 * 0.0125);
+  c.run_level = with_scale(0.1);  // the reference 1 is not the size: 0.1 is (error 0.156 of it)
+  const auto small = sweep_with(c, {resolution_gate("value")});
+  EXPECT_FALSE(small.passed()) << small.gates[0].reason;
+  EXPECT_DOUBLE_EQ(*small.gates[0].measured, 100.0 * 0.0125 * 0.0125 / 0.1);
+}
+
+TEST(ResolutionGate, EveryOrderGetsOneOnceAndItHoldsAwayFromTheDefaults) {
+  std::vector<GateSpec> gates{order_gate("value", 2.0, ""), order_gate("value", 2.0, "again"),
+                              order_gate("error", 2.0, ""), upper_bound_gate("value", 1.0, GateScope::AllLevels, "")};
+  add_resolution_gates(gates);
+  add_resolution_gates(gates);  // idempotent
+  ASSERT_EQ(gates.size(), 6u);
+  EXPECT_TRUE(gates[4].relative && gates[4].metric == "value" && !gates[4].measured);
+  EXPECT_TRUE(gates[5].relative && gates[5].metric == "error");
+  // A bound measured at the defaults is skipped at other parameters; the resolution gate is not.
+  Case c = synthetic_case(2.0);
+  GateSpec measured = scaled_upper_bound_gate("value", 2.0, 2.0, GateScope::FinestLevel, "measured");
+  measured.measured = true;
+  c.gates = {order_gate("value", 2.0, ""), measured};
+  add_resolution_gates(c.gates);
+  Parameters other = c.info.parameters;
+  set_parameter(other, "c", 1e7);
+  const auto result = run_sweep(c, other, c.info.resolution.default_levels);
+  ASSERT_EQ(result.gates.size(), 2u);  // order and resolution; the measured bound skipped
+  EXPECT_EQ(result.skipped_gates.size(), 1u);
+  EXPECT_TRUE(result.gates[0].passed);
+  EXPECT_FALSE(result.gates[1].passed) << result.gates[1].reason;
+}
+
+TEST(ResolutionGate, EveryRegisteredOrderGateHasOne) {
+  for (const Case& c : default_registry().cases())
+    for (const GateSpec& order : c.gates) {
+      if (order.kind != GateKind::Order) continue;
+      const auto beside = std::count_if(c.gates.begin(), c.gates.end(), [&](const GateSpec& g) {
+        return g.relative && g.metric == order.metric && g.upper == kResolvedFraction;
+      });
+      EXPECT_EQ(beside, 1) << c.info.name << ": " << order.name;
+    }
 }
 
 }  // namespace

@@ -21,13 +21,13 @@ const Case& named(const std::string& name) { return rodvv::testing::named_case(n
 TEST(Rod3dDynamicCases, ModesPassAtDefaultLevels) {
   const auto result = run_at_default_levels(named("rod3d/modes"));
   EXPECT_TRUE(result.passed()) << failing_gates(result);
-  EXPECT_EQ(result.gates.size(), 13u);
+  EXPECT_EQ(result.gates.size(), 19u);  // with a resolution gate beside each of the 6 orders
 }
 
 TEST(Rod3dDynamicCases, EnergyInTimePassesAtDefaultLevels) {
   const auto result = run_at_default_levels(named("rod3d/energy-in-time"));
   EXPECT_TRUE(result.passed()) << failing_gates(result);
-  EXPECT_EQ(result.gates.size(), 5u);
+  EXPECT_EQ(result.gates.size(), 7u);  // with a resolution gate beside each of the 2 orders
 }
 
 TEST(Rod3dDynamicCasesHaveTeeth, DoubledMassSeenByTheSolverOnlyFails) {

@@ -97,15 +97,24 @@ Case modes_with(std::function<void(Parameters&)> solver,
 
 // The gates on the metrics `red` names must fail, every other gate must pass.
 void expect_red_exactly(const SweepResult& result, const std::function<bool(const std::string&)>& red) {
-  ASSERT_EQ(result.gates.size(), 19u);
-  for (const auto& gate : result.gates) EXPECT_EQ(gate.passed, !red(gate.metric)) << gate.name << ": " << gate.reason;
+  ASSERT_EQ(result.gates.size(), 27u);
+  for (const auto& gate : result.gates) {
+    // A resolution gate asks only for errors under 10 % of the frequency: a perturbation of a few %
+    // leaves it green (the measured C h^2 bounds are the teeth here); it may only fail where red.
+    if (gate.name.find(" resolved: ") != std::string::npos) {
+      if (!red(gate.metric)) EXPECT_TRUE(gate.passed) << gate.name << ": " << gate.reason;
+      continue;
+    }
+    EXPECT_EQ(gate.passed, !red(gate.metric)) << gate.name << ": " << gate.reason;
+  }
 }
 
 TEST(SuperHelixModes, GatesPassWithTheTorsionAndBothBendingPlanes) {
   const auto result = run_at_default_levels(named("superhelix/modes"));
   EXPECT_TRUE(result.passed()) << failing_gates(result);
-  // 8 frequencies x (order + magnitude), Rayleigh-Ritz, the discrete torsion, restricted vs full
-  EXPECT_EQ(result.gates.size(), 19u);
+  // 8 frequencies x (order + measured magnitude + resolution), Rayleigh-Ritz, the discrete torsion,
+  // restricted vs full
+  EXPECT_EQ(result.gates.size(), 27u);
   const auto& finest = result.levels.back();
   EXPECT_EQ(finest.level, 64.0);
   // The twist's discrete closed form: relative error (k ell)^2 / 24 + O(ell^4) from above.
@@ -202,12 +211,13 @@ TEST(SuperHelixGatesHaveTeeth, EnergyLossMagnitudeGateCatchesALargerErrorConstan
     return runner(shifted, level);
   };
   const auto result = run_at_default_levels(perturbed);
-  ASSERT_EQ(result.gates.size(), 4u);
+  ASSERT_EQ(result.gates.size(), 5u);
   for (const auto& gate : result.gates) {
     if (gate.kind == GateKind::Order) {
       EXPECT_TRUE(gate.passed) << gate.name << ": " << gate.reason;
     }
-    if (gate.metric == "energy_loss" && gate.kind != GateKind::Order) {
+    // The measured magnitude bound (not the resolution gate, which asks only for a loss under 10 %).
+    if (gate.metric == "energy_loss" && gate.kind != GateKind::Order && gate.name.find(" resolved: ") == std::string::npos) {
       EXPECT_FALSE(gate.passed) << gate.name << ": " << gate.reason;
     }
   }

@@ -82,7 +82,7 @@ harness::SweepResult symplectic_case() {
     level.cpu_seconds = 0.009 / dt * 1e-3;
     const double err = 0.3 * dt * dt;
     level.metrics["period-error"] = {period + err, period, err};
-    level.metrics["energy-drift"] = {1e-3 * dt * dt, 0.0, 1e-3 * dt * dt};
+    level.metrics["energy-drift"] = {1e-3 * dt * dt, 0.0, 1e-3 * dt * dt, 0.5};  // size: the energy
     level.metrics["steps"] = {100.0 / dt, std::nullopt, std::nullopt};
     level.series.push_back(energy_series(false, dt));
     r.levels.push_back(level);
@@ -267,6 +267,7 @@ void expect_same(const harness::SweepResult& a, const harness::SweepResult& b) {
       expect_same(sa.computed, sb.computed, name + ".computed");
       expect_same(sa.reference, sb.reference, name + ".reference");
       expect_same(sa.error, sb.error, name + ".error");
+      expect_same(sa.scale, sb.scale, name + ".scale");
     }
     ASSERT_EQ(la.series.size(), lb.series.size());
     for (std::size_t k = 0; k < la.series.size(); ++k) {
@@ -424,6 +425,7 @@ TEST(ReportsJson, AbsentOptionalsAreNull) {
   const json& sym = j["cases"][0];
   EXPECT_TRUE(sym["levels"][0]["metrics"]["steps"]["reference"].is_null());
   EXPECT_TRUE(sym["levels"][0]["metrics"]["steps"]["error"].is_null());
+  EXPECT_TRUE(sym["levels"][0]["metrics"]["steps"]["scale"].is_null());
   EXPECT_TRUE(sym["levels"][0]["failure"].is_null());
   EXPECT_TRUE(sym["info"]["metrics"][1]["theoretical_order"].is_null());
   EXPECT_TRUE(sym["analyses"][1]["richardson"].is_null());
@@ -512,6 +514,20 @@ TEST(ReportsJson, LevelsWithoutCpuTimeReadAsZero) {
   ASSERT_FALSE(back.cases.empty());
   ASSERT_FALSE(back.cases[0].levels.empty());
   EXPECT_EQ(back.cases[0].levels[0].cpu_seconds, 0.0);
+}
+
+// Files written before metric sizes were recorded still read: no scale; a wrong type is refused.
+TEST(ReportsJson, MetricsWithoutScaleReadAsNone) {
+  json j = to_json(synthetic_report());
+  for (auto& c : j["cases"])
+    for (auto& level : c["levels"])
+      for (auto& [name, metric] : level["metrics"].items()) metric.erase("scale");
+  const ValidationReport back = report_from_json(j, "memory");
+  EXPECT_FALSE(back.cases[0].levels[0].metrics.at("energy-drift").scale.has_value());
+  json wrong = to_json(synthetic_report());
+  wrong["cases"][0]["levels"][0]["metrics"]["energy-drift"]["scale"] = "big";
+  const std::string message = load_error(wrong);
+  EXPECT_NE(message.find("scale"), std::string::npos) << message;
 }
 
 TEST(ReportsJson, MissingCasesIsRejected) {

@@ -169,7 +169,7 @@ LevelOutput run_level(e2d::EndSupports supports, e2d::Scheme scheme, const Param
     output.metrics[fmt::format("P{}", k)] = {mode.load, exact, std::abs(mode.load - exact) / exact};
     const ExactCurve curve = exact_curve(supports, k, L);
     const double error = shape_error(mode, supports, k, curve, L);
-    output.metrics[fmt::format("mode{}_shape", k)] = {error, 0.0, error};
+    output.metrics[fmt::format("mode{}_shape", k)] = {error, 0.0, error, 1.0};  // modes scaled to max |theta| = 1
     output.series.push_back(thin_series(fmt::format("mode {}|computed", k), "s", "theta", mode.s, mode.theta));
     output.series.push_back(thin_series(fmt::format("mode {}|exact", k), "s", "theta", curve.s, curve.theta));
   }

@@ -12,7 +12,8 @@
 namespace rodvv::harness::cases {
 
 MetricSample error_sample(double computed, double reference) { return {computed, reference, std::abs(computed - reference)}; }
-MetricSample value_sample(double value) { return {value, 0.0, std::abs(value)}; }
+MetricSample value_sample(double value) { return {value, 0.0, std::abs(value), std::nullopt}; }
+MetricSample value_sample(double value, double size) { return {value, 0.0, std::abs(value), size}; }
 MetricSample diagnostic(double value) { return {value, std::nullopt, std::nullopt}; }
 
 MetricSpec error_metric(std::string name, std::string unit, std::string description, std::optional<double> order,
@@ -66,10 +67,11 @@ Case make_case(std::string family, CaseText text, Parameters parameters, Resolut
 void add_noether3d_metrics(LevelOutput& output, const SpatialRodSolution& solution, std::optional<double> exact) {
   const auto summary = invariants::noether3d_summary(solution);
   const double scale = std::max(summary.scale, 1e-300);
-  output.metrics["H_spread"] = value_sample(summary.spread / scale);
-  output.metrics["H_form_difference"] = value_sample(summary.form_difference / scale);
+  output.metrics["H_spread"] = value_sample(summary.spread / scale, 1.0);  // in units of the term scale
+  output.metrics["H_form_difference"] = value_sample(summary.form_difference / scale, 1.0);
   if (exact)
-    output.metrics["H_mean"] = {summary.mean, *exact, std::abs(summary.mean - *exact) / std::max(std::abs(*exact), scale)};
+    output.metrics["H_mean"] = {summary.mean, *exact, std::abs(summary.mean - *exact) / std::max(std::abs(*exact), scale),
+                                1.0};  // a relative error: size 1
   output.series.push_back(thin_series("H(s)|compact", "s", "H", solution.s, invariants::noether3d_compact(solution)));
   output.series.push_back(thin_series("H(s)|flattened", "s", "H", solution.s, invariants::noether3d_flattened(solution)));
 }

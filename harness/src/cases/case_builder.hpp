@@ -15,6 +15,9 @@ namespace rodvv::harness::cases {
 // Samples: an error against a reference; a value whose ideal is 0 (gated on |value|); a diagnostic.
 MetricSample error_sample(double computed, double reference);
 MetricSample value_sample(double value);
+// The same, with the quantity's natural size (MetricSample::scale): 1 for a value already in units
+// of a problem scale (shape / L, H spread / term scale).
+MetricSample value_sample(double value, double size);
 MetricSample diagnostic(double value);
 
 MetricSpec error_metric(std::string name, std::string unit, std::string description, std::optional<double> order,

@@ -141,7 +141,8 @@ LevelOutput run_cavity_level(e2d::Scheme scheme, Regime regime, const Parameters
   out.metrics["wall_force"] = error_sample(wall, r.wall_force);
   const auto spread = invariants::planar_noether_spread(rod);
   out.metrics["H_mean"] = error_sample(spread.mean, r.H);
-  out.metrics["H_spread"] = {spread.spread, 0.0, spread.spread};
+  // Sizes: H_spread is in units of H's natural scale; the curvature at the contact or 1/L = 1.
+  out.metrics["H_spread"] = {spread.spread, 0.0, spread.spread, 1.0};
   const double penetration = std::max(0.0, -*std::min_element(c.min_gap.begin(), c.min_gap.end()));
   out.metrics["penetration"] = {penetration, 0.0, penetration};
   out.metrics["contacts"] = {double(c.contacts.size()), std::nullopt, std::nullopt};
@@ -150,7 +151,7 @@ LevelOutput run_cavity_level(e2d::Scheme scheme, Regime regime, const Parameters
     const std::size_t m = n / 2;
     out.metrics["kappa_contact"] = error_sample(std::abs(rod.kappa[m]), r.kappa_mid);
     const double jump = std::max(std::abs(rod.kappa[m + 1] - rod.kappa[m]), std::abs(rod.kappa[m] - rod.kappa[m - 1]));
-    out.metrics["kappa_step"] = {jump, 0.0, jump};
+    out.metrics["kappa_step"] = {jump, 0.0, jump, std::max(std::abs(r.kappa_mid), 1.0)};
   }
   if (regime == Regime::Free) out.metrics["kappa_mid"] = error_sample(std::abs(rod.kappa[n / 2]), r.kappa_mid);
   if (regime == Regime::Line && !c.contacts.empty()) {
@@ -322,7 +323,7 @@ LevelOutput run_soft_level(const Parameters& p, double b) {
   const auto spread = invariants::planar_noether_spread(rod);
   out.metrics["P_vs_hard"] = error_sample(P, hard.P);
   out.metrics["H_vs_hard"] = error_sample(spread.mean, hard.H);
-  out.metrics["H_spread"] = {spread.spread, 0.0, spread.spread};
+  out.metrics["H_spread"] = {spread.spread, 0.0, spread.spread, 1.0};
   for (const SoftRow& row : kSoftTable)
     if (std::abs(row.b - b) <= 1e-12 * b) {
       out.metrics["P_vs_table"] = error_sample(P, row.P);

@@ -113,7 +113,7 @@ void add_noether_metrics(LevelOutput& output, const PlanarRodSolution& solution,
                          std::optional<double> exact_h, const Units& units = {}) {
   if (solution.axial_force.empty()) return;  // a solution file without internal forces: no H
   const auto spread = invariants::planar_noether_spread(solution);
-  output.metrics["H_spread"] = {spread.spread, 0.0, spread.spread};
+  output.metrics["H_spread"] = {spread.spread, 0.0, spread.spread, 1.0};  // in units of H's natural scale
   if (exact_h) output.metrics["H_mean"] = error_sample(spread.mean, *exact_h, units.force());
   const auto h = invariants::planar_noether_h(solution);
   output.series.push_back(thin_series("H(s)", "s", "H", solution.s, h));
@@ -149,7 +149,7 @@ ShapeComparison compare_shape(const PlanarRodSolution& solution, ExactPosition&&
 void add_shape_metrics(LevelOutput& output, const PlanarRodSolution& solution,
                        const ShapeComparison& shape, double exact_h, const Units& units) {
   const double shape_error = shape.max_error / units.length;
-  output.metrics["shape_max_error"] = {shape_error, 0.0, shape_error};
+  output.metrics["shape_max_error"] = {shape_error, 0.0, shape_error, 1.0};  // in units of L
   add_noether_metrics(output, solution, exact_h, units);
   add_shape_series(output, solution, shape.exact_x, shape.exact_y);
 }
@@ -379,10 +379,12 @@ void add_shooting_comparison(LevelOutput& output, const PlanarRodSolution& solut
                              const PlanarRodSolution& reference) {
   output.metrics["tip_x"] = error_sample(solution.x.back(), reference.x.back());
   output.metrics["tip_y"] = error_sample(solution.y.back(), reference.y.back());
+  // Sized by the rod's length: a tip coordinate may vanish.
+  output.metrics["tip_x"].scale = output.metrics["tip_y"].scale = reference.s.back();
   double worst = 0.0;
   for (std::size_t i = 0; i < solution.nodes(); ++i)
     worst = std::max(worst, std::hypot(solution.x[i] - reference.x[i], solution.y[i] - reference.y[i]));
-  output.metrics["shape_max_error"] = {worst, 0.0, worst};
+  output.metrics["shape_max_error"] = {worst, 0.0, worst, reference.s.back()};  // size: the rod's length
   output.series.push_back(thin_series("shape|computed", "x", "y", solution.x, solution.y));
   output.series.push_back(thin_series("shape|shooting", "x", "y", reference.x, reference.y));
 }
@@ -422,7 +424,8 @@ LevelOutput run_drift_level(Variation variation, e2d::Scheme scheme, const Param
   LevelOutput output;
   add_shooting_comparison(output, solution, shooting.sampled(problem, {P, slope}, n, options.load_steps));
   // Error of the measured drift H(s) - H(0) against its predicted integral (PHYSICS.md §1.3).
-  output.metrics["drift_residual"] = {check.max_abs_residual, 0.0, check.max_abs_residual};
+  // Size: the problem's force scale P + EI(0)/L^2 (L = EI(0) = 1 here), which H and its drift are made of.
+  output.metrics["drift_residual"] = {check.max_abs_residual, 0.0, check.max_abs_residual, P + 1.0};
   output.metrics["H_drift"] = {check.max_abs_drift, std::nullopt, std::nullopt};
   const auto h = invariants::planar_noether_h(solution);
   const auto predicted = invariants::planar_noether_predicted_drift(solution, d_ei, d_kappa_hat);

@@ -80,7 +80,7 @@ GateSpec measured_bound(std::string metric, double at_finest, double h_finest) {
 
 void add_noether(LevelOutput& output, const PlanarRodSolution& solution) {
   const auto spread = invariants::planar_noether_spread(solution);
-  output.metrics["H_spread"] = {spread.spread, 0.0, spread.spread};
+  output.metrics["H_spread"] = {spread.spread, 0.0, spread.spread, 1.0};  // in units of H's natural scale
   output.series.push_back(thin_series("H(s)", "s", "H", solution.s, invariants::planar_noether_h(solution)));
 }
 
@@ -126,7 +126,7 @@ LevelOutput run_tension_level(e2d::Scheme scheme, const Parameters& parameters, 
   for (std::size_t e = 0; e < solution.edge_axial_force.size(); ++e)
     force_error = std::max({force_error, std::abs(solution.edge_axial_force[e] - F),
                             std::abs(solution.edge_shear_force[e])});
-  output.metrics["edge_force_error"] = {force_error, 0.0, force_error};
+  output.metrics["edge_force_error"] = {force_error, 0.0, force_error, F};
   add_noether(output, solution);
   std::vector<double> stretch(solution.s.size());
   for (std::size_t i = 0; i < stretch.size(); ++i) stretch[i] = solution.axial_force[i] / EA;
@@ -256,6 +256,7 @@ LevelOutput measure_cantilever(const Parameters& parameters, double, const Solut
   LevelOutput output;
   output.metrics["tip_x"] = error_sample(solution.x.back(), reference.tip_x);
   output.metrics["tip_y"] = error_sample(solution.y.back(), reference.tip_y);
+  output.metrics["tip_x"].scale = output.metrics["tip_y"].scale = c.L;  // a tip near an axis: the rod's length
   output.metrics["tip_theta"] = error_sample(solution.theta.back(), reference.tip_theta);
   output.metrics["reference_uncertainty"] = {reference.uncertainty, std::nullopt, std::nullopt};
   if (solution.iterations > 0)

@@ -45,7 +45,9 @@ std::size_t element_count(double level) { return static_cast<std::size_t>(std::l
 MetricSample error_sample(double computed, double reference) {
   return {computed, reference, std::abs(computed - reference)};
 }
-MetricSample deviation(double value) { return {value, 0.0, std::abs(value)}; }
+MetricSample deviation(double value) { return {value, 0.0, std::abs(value), std::nullopt}; }
+// A deviation from an identity between terms of size `size` (MetricSample::scale).
+MetricSample deviation(double value, double size) { return {value, 0.0, std::abs(value), size}; }
 
 MetricSpec error_metric(std::string name, std::string unit, std::string description) {
   return {std::move(name), MetricKind::Error, std::move(unit), std::move(description), false, 2.0};
@@ -115,9 +117,9 @@ LevelOutput run_eshelby_level(const Parameters& p, double level) {
   out.metrics["exit_moment"] = error_sample(std::abs(m), r.exit_moment);
   out.metrics["tip_x"] = error_sample(s.arm.tip_x, r.tip_x);
   out.metrics["tip_y"] = error_sample(s.arm.tip_y, r.tip_y);
-  out.metrics["eshelby_identity"] = deviation(s.tension_jump - m * m / (2.0 * b));
-  out.metrics["H_continuity"] = deviation(s.axial_force_inside - spread.mean);
-  out.metrics["H_spread"] = {spread.spread, 0.0, spread.spread};
+  out.metrics["eshelby_identity"] = deviation(s.tension_jump - m * m / (2.0 * b), m * m / (2.0 * b));
+  out.metrics["H_continuity"] = deviation(s.axial_force_inside - spread.mean, std::abs(spread.mean));
+  out.metrics["H_spread"] = deviation(spread.spread, 1.0);  // in units of H's natural scale
   out.metrics["N_in_vs_S"] = deviation(s.axial_force_inside - problem.pull);
   out.metrics["tension_jump"] = {s.tension_jump, std::nullopt, std::nullopt};
   out.metrics["length_stiffness"] = {s.length_stiffness, std::nullopt, std::nullopt};
@@ -220,11 +222,13 @@ LevelOutput run_arm_scale_level(const Parameters& p, double level) {
   out.metrics["beta2"] = error_sample(s.beta2, r.arm2.tip_angle);
   out.metrics["exit_moment_1"] = error_sample(std::abs(m1), r.arm1.exit_moment);
   out.metrics["exit_moment_2"] = error_sample(std::abs(m2), r.arm2.exit_moment);
-  out.metrics["tip_balance"] = deviation(problem.weight1 * std::sin(s.beta1) - problem.weight2 * std::sin(s.beta2));
-  out.metrics["eshelby_balance"] = deviation((problem.weight1 + problem.weight2) * std::sin(problem.angle) -
-                                             (m2 * m2 - m1 * m1) / (2.0 * b));
-  out.metrics["H_continuity"] = deviation(std::max(std::abs(s.axial_force - h1.mean), std::abs(s.axial_force - h2.mean)));
-  out.metrics["H_spread"] = deviation(std::max(h1.spread, h2.spread));
+  const double w1 = problem.weight1, w2 = problem.weight2;
+  out.metrics["tip_balance"] = deviation(w1 * std::sin(s.beta1) - w2 * std::sin(s.beta2), w1 * std::abs(std::sin(s.beta1)));
+  out.metrics["eshelby_balance"] = deviation((w1 + w2) * std::sin(problem.angle) - (m2 * m2 - m1 * m1) / (2.0 * b),
+                                             (w1 + w2) * std::abs(std::sin(problem.angle)));
+  out.metrics["H_continuity"] =
+      deviation(std::max(std::abs(s.axial_force - h1.mean), std::abs(s.axial_force - h2.mean)), std::abs(s.axial_force));
+  out.metrics["H_spread"] = deviation(std::max(h1.spread, h2.spread), 1.0);
   out.metrics["N1_vs_N2"] = deviation(s.axial_force - s.axial_force_arm2);
   out.metrics["length_stiffness"] = {s.length_stiffness, std::nullopt, std::nullopt};
   out.metrics["newton_iterations"] = {double(s.iterations), std::nullopt, std::nullopt};

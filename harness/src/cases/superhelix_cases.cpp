@@ -166,10 +166,11 @@ LevelOutput run_roll_up(const Parameters& p, double level) {
   for (std::size_t i = 0; i < solution.vertex_s.size(); ++i)
     shape = std::max(shape, (solution.vertex_position[i] - ref::end_moment_roll_up_point(rod, solution.vertex_s[i]).position).norm());
   LevelOutput output;
-  output.metrics["shape_max_error"] = value_sample(shape / L);
+  output.metrics["shape_max_error"] = value_sample(shape / L, 1.0);
   // |r(L) - r(0)| / L against the closed form's (0 for a full turn): the nodal rod3d/roll-up's metric
   output.metrics["tip_gap"] = error_sample((solution.vertex_position.back() - model.root_position).norm() / L,
                                            (ref::end_moment_roll_up_point(rod, L).position - model.root_position).norm() / L);
+  output.metrics["tip_gap"].scale = 1.0;  // in units of L (the closed form's gap is 0 for a full turn)
   output.metrics["newton_iterations"] = diagnostic(double(result.iterations));
   add_noether3d_metrics(output, solution, ref::end_moment_roll_up_invariant(rod));
   return output;
@@ -207,9 +208,9 @@ LevelOutput run_helix(const Parameters& p, double level) {
   }
   for (const auto& u : solution.strain_u) strain = std::max(strain, (u - Vec3(exact.tau, exact.kappa, 0.0)).cwiseAbs().maxCoeff());
   LevelOutput output;
-  output.metrics["shape_max_error"] = value_sample(shape / L);
-  output.metrics["frame_max_error"] = value_sample(frame);
-  output.metrics["strain_max_error"] = value_sample(strain / exact.darboux);
+  output.metrics["shape_max_error"] = value_sample(shape / L, 1.0);
+  output.metrics["frame_max_error"] = value_sample(frame, 1.0);  // radians
+  output.metrics["strain_max_error"] = value_sample(strain / exact.darboux, 1.0);
   output.metrics["newton_iterations"] = diagnostic(double(result.iterations));
   add_noether3d_metrics(output, solution, exact.H);
   std::vector<double> x, y, xr, yr;
@@ -363,7 +364,7 @@ LevelOutput run_clothoid_heavy(const Parameters& p, double level) {
   output.series.push_back(thin_series("H(s)|compact, Gauss stations", "s", "H", gauss.s, invariants::noether3d_compact(gauss)));
   const Vec3 reference = heavy_tip_reference(p);
   const Vec3 tip = nodes.vertex_position.back() - model.root_position;
-  output.metrics["tip_error"] = {tip.norm(), reference.norm(), (tip - reference).norm() / model.length};
+  output.metrics["tip_error"] = {tip.norm(), reference.norm(), (tip - reference).norm() / model.length, 1.0};  // in L
   const char* component[3] = {"tip_x", "tip_y", "tip_z"};
   for (int i = 0; i < 3; ++i) output.metrics[component[i]] = error_sample(tip[i] / model.length, reference[i] / model.length);
   output.metrics["newton_iterations"] = diagnostic(double(result.iterations));
@@ -426,7 +427,7 @@ LevelOutput run_modes(const Parameters& p, double level) {
   double smallest_excess = 1.0;
   const auto relative = [&](const std::string& name, double computed, double exact) {
     const double excess = (computed - exact) / exact;
-    output.metrics[name] = {computed, exact, std::abs(excess)};
+    output.metrics[name] = {computed, exact, std::abs(excess), 1.0};  // a relative error: size 1
     smallest_excess = std::min(smallest_excess, excess);
   };
   for (std::size_t n = 1; n <= kBendingModes; ++n) {
@@ -533,7 +534,7 @@ LevelOutput run_energy(const Parameters& p, double dt) {
   }
   LevelOutput output;
   // The exact flow conserves E: the loss E(0) - E(t_end) is the error, O(h) for this scheme.
-  output.metrics["energy_loss"] = value_sample((e0 - energy) / scale);
+  output.metrics["energy_loss"] = value_sample((e0 - energy) / scale, 1.0);
   output.metrics["max_energy_increase"] = diagnostic(worst_increase / scale);
   output.metrics["dense_vs_recursive"] = value_sample(worst_residual);
   output.metrics["dense_vs_recursive_forward"] = diagnostic(worst_forward);

@@ -15,6 +15,10 @@ struct MetricSample {
   double computed = 0.0;
   std::optional<double> reference;  // exact value, when one exists
   std::optional<double> error;      // the quantity whose convergence is fitted and gated
+  // The quantity's natural size in the error's units, where |reference| is not it: a reference that
+  // is 0 or may vanish, or an error already relative or in units of a problem scale (then 1).
+  // The error's relative size is error / scale, else error / |reference| (gate.hpp, metric_size).
+  std::optional<double> scale = std::nullopt;
 };
 
 // A curve attached to a level for plotting (energy vs time, theta vs t, ...), thinned to a few

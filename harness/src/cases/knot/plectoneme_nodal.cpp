@@ -161,7 +161,7 @@ LevelOutput run(const Parameters& p, double level) {
   const double T_from_moment = law(k.B, R, theta_moment).tail_tension;
 
   LevelOutput output;
-  output.metrics["H_deviation"] = value_sample(deviation);
+  output.metrics["H_deviation"] = value_sample(deviation, 1.0);  // in units of the tension
   output.metrics["tension_law"] = value_sample(T_ext / at.tail_tension - 1.0);
   output.metrics["tension_from_moment"] = value_sample(T_ext / T_from_moment - 1.0);
   output.metrics["moment_law"] = value_sample(M_t / M_law - 1.0);

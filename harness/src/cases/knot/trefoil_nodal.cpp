@@ -119,7 +119,7 @@ LevelOutput run(const Parameters& p, double level) {
   const double span = (result.state.position[n] - model.root.position).x();
 
   LevelOutput output;
-  output.metrics["H_deviation"] = value_sample(deviation);
+  output.metrics["H_deviation"] = value_sample(deviation, 1.0);  // in units of the tension
   output.metrics["perpendicular_ratio"] = diagnostic(perpendicular_sum / double(turns.size()));
   output.metrics["perpendicular_points"] = diagnostic(double(turns.size()));
   output.metrics["apex_ratio"] = diagnostic(apex_ratio);

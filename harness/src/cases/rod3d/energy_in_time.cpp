@@ -96,9 +96,9 @@ LevelOutput run(const Parameters& p, double dt) {
   const Run midpoint = integrate(model, start, dt, t_end, rod::TimeIntegrator::ImplicitMidpoint, scale);
 
   LevelOutput output;
-  output.metrics["euler_energy_loss"] = value_sample(-euler.final_error);
+  output.metrics["euler_energy_loss"] = value_sample(-euler.final_error, 1.0);  // in units of rho S |g| L^2
   output.metrics["euler_max_increase"] = value_sample(std::max(euler.max_increase, 0.0));
-  output.metrics["midpoint_energy_error"] = value_sample(midpoint.max_error);
+  output.metrics["midpoint_energy_error"] = value_sample(midpoint.max_error, 1.0);
   output.metrics["midpoint_final_error"] = diagnostic(midpoint.final_error);
   // The two methods' tips differ by Euler's O(h) global error: a diagnostic of the trajectory.
   output.metrics["tip_difference"] = diagnostic((euler.tip - midpoint.tip).norm() / model.length);

@@ -78,7 +78,7 @@ LevelOutput run(const Parameters& p, double level) {
 
   LevelOutput output;
   const auto relative = [](double computed, double exact) {
-    return MetricSample{computed, exact, std::abs(computed - exact) / exact};
+    return MetricSample{computed, exact, std::abs(computed - exact) / exact, 1.0};  // a relative error: size 1
   };
   const double ell = rod::rest_edge_length(model), c_twist = std::sqrt(GJ / rhoI0);
   // The eigensolver's round-off: a backward error of eps |A|_2 = eps omega_max^2 on each omega^2.
