@@ -3,6 +3,7 @@
 // v = F(amp, k), E(am v) = E(amp, k), cn v = cos(amp), dn v = cos(psi/2) (elliptic.hpp, Carlson).
 #include "rodvv/references/cavity.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -18,6 +19,14 @@ namespace rodvv::references {
 namespace {
 
 constexpr double kMaxFlat = 0.6;  // line branch tabulated up to l = 0.6 L (PHYSICS.md §4.1)
+// The tallest inflexional half wave: max over phi0 of sin(phi0) (2E/K - 1) = a / L', reached at
+// phi0 = 1.02342521748698585 (mpmath, 30 digits: 0.642140994038159897). A line contact with side
+// waves of length L' exists only for a / L' below it.
+constexpr double kTallestHalfWave = 0.642140994038159897;
+// The line branch stops where a / L' = 0.999 of that: the first root of the 1-degree scan in
+// line_phi0 is then found (the scan's grid misses the flat maximum by at most ~8e-5 < 6.4e-4), and
+// phi0, which has a square-root singularity at the tangency, stays well conditioned.
+constexpr double kReachableFraction = 0.999;
 
 template <class F>
 double root(const char* method, F f, double a, double b) {
@@ -32,7 +41,9 @@ double root(const char* method, F f, double a, double b) {
 void validate(const CavityColumn& c) {
   require_positive("L", c.L);
   require_positive("EI", c.EI);
-  require_positive("wall_gap", c.gap);
+  // Beyond 0.3207 L the point contact never flattens (no inflexional half wave of length L/2 reaches
+  // the wall), and the branches this reference follows end.
+  require_open_interval("wall_gap", c.gap, 0.0, 0.5 * kReachableFraction * kTallestHalfWave * c.L);
 }
 
 // Point-contact geometry for given (psi, phi0): the contact point of the left half.
@@ -73,9 +84,8 @@ double line_phi0(double target) {
   throw InputError("flat_length", "invalid parameter 'flat_length': no inflexional half wave reaches the wall");
 }
 
-double psi_transition(const CavityColumn& c) {
-  return line_phi0(c.gap / (0.5 * c.L));
-}
+double psi_transition(const CavityColumn& c) { return line_phi0(c.gap / (0.5 * c.L)); }
+
 
 }  // namespace
 
@@ -83,10 +93,16 @@ CavityState cavity_point_contact(const CavityColumn& c, double psi) {
   validate(c);
   const double pt = psi_transition(c);
   require_closed_interval("psi", psi, 0.0, pt);
-  // phi0 in (psi, pi): y_c increases with phi0 from y(psi) <= a.
+  // phi0 in (psi, pi): y_c rises from y(psi) <= a to a maximum (0.403 L at psi = 0, phi0 = 1.985)
+  // and falls again; the contact is the first crossing, bracketed by a 1-degree scan.
   auto f = [&](double phi0) { return point_half(c, psi, phi0).y - c.gap; };
-  const double lo = std::max(psi, 1e-12);
-  const double phi0 = psi == pt ? pt : root("cavity point-contact phi0", f, lo, 0.95 * std::numbers::pi);
+  double phi0 = pt;
+  if (psi != pt) {
+    const double step = std::numbers::pi / 180.0;
+    double lo = std::max(psi, 1e-12), hi = lo + step;
+    while (hi < 0.95 * std::numbers::pi && f(hi) < 0.0) lo = hi, hi += step;
+    phi0 = root("cavity point-contact phi0", f, lo, std::min(hi, 0.95 * std::numbers::pi));
+  }
   const HalfWave h = point_half(c, psi, phi0);
   CavityState s;
   s.regime = CavityRegime::PointContact;  // psi = 0: touching with zero force
@@ -104,7 +120,7 @@ CavityState cavity_point_contact(const CavityColumn& c, double psi) {
 
 CavityState cavity_line_contact(const CavityColumn& c, double l) {
   validate(c);
-  require_closed_interval("flat_length", l, 0.0, kMaxFlat * c.L);
+  require_closed_interval("flat_length", l, 0.0, cavity_max_flat_length(c));
   const double side = 0.5 * (c.L - l);
   const double phi0 = line_phi0(c.gap / side);
   const double K = detail::complete_k(std::cos(0.5 * phi0));
@@ -130,9 +146,20 @@ double cavity_transition_shortening(const CavityColumn& c) {
   return cavity_line_contact(c, 0.0).shortening;
 }
 
+// 0.6 L, or shorter where the side waves could not reach the walls (a / L' <= kReachableFraction x
+// the tallest half wave, L' = (L - l) / 2).
+double cavity_max_flat_length(const CavityColumn& c) {
+  validate(c);
+  return std::min(kMaxFlat * c.L, c.L - 2.0 * c.gap / (kReachableFraction * kTallestHalfWave));
+}
+
+double cavity_max_shortening(const CavityColumn& c) {
+  return cavity_line_contact(c, cavity_max_flat_length(c)).shortening;
+}
+
 CavityState cavity_from_shortening(const CavityColumn& c, double d) {
   validate(c);
-  const double d_max = cavity_line_contact(c, kMaxFlat * c.L).shortening;
+  const double d_max = cavity_max_shortening(c);
   require_open_interval("shortening", d, 0.0, std::nextafter(d_max, 2.0 * d_max));
   const double d_touch = cavity_touch_shortening(c);
   const double d_line = cavity_transition_shortening(c);
@@ -159,7 +186,7 @@ CavityState cavity_from_shortening(const CavityColumn& c, double d) {
     return cavity_point_contact(c, root("cavity point-contact psi", f, 0.0, pt));
   }
   auto f = [&](double l) { return cavity_line_contact(c, l).shortening - d; };
-  return cavity_line_contact(c, root("cavity flat length", f, 0.0, kMaxFlat * c.L));
+  return cavity_line_contact(c, root("cavity flat length", f, 0.0, cavity_max_flat_length(c)));
 }
 
 }  // namespace rodvv::references

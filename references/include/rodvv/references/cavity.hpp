@@ -49,12 +49,17 @@ struct CavityState {
 // Contact starts (y_max = a) and the point contact becomes a line contact (kappa_c = 0).
 double cavity_touch_shortening(const CavityColumn& column);
 double cavity_transition_shortening(const CavityColumn& column);
+// The end of the line branch: flat length min(0.6 L, the longest whose side waves still reach the
+// walls, to 0.999 of the tallest inflexional half wave). The branches exist for wall_gap up to
+// 0.321 L (beyond it the point contact never flattens; cavity_point_contact refuses it).
+double cavity_max_shortening(const CavityColumn& column);
+double cavity_max_flat_length(const CavityColumn& column);
 
 // The point-contact branch parametrised by the tilt psi in [0, psi_transition].
 CavityState cavity_point_contact(const CavityColumn& column, double psi);
-// The line-contact branch parametrised by the flat length l in [0, 0.6 L].
+// The line-contact branch parametrised by the flat length l in [0, min(0.6 L, reachable)].
 CavityState cavity_line_contact(const CavityColumn& column, double flat_length);
-// The equilibrium at an imposed shortening d in (0, d(l = 0.6 L)].
+// The equilibrium at an imposed shortening d in (0, cavity_max_shortening].
 CavityState cavity_from_shortening(const CavityColumn& column, double shortening);
 
 }  // namespace rodvv::references
