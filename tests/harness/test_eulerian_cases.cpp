@@ -88,6 +88,28 @@ TEST(EulerianGatesHaveTeeth, MassGateCatchesASmallLoss) {
   EXPECT_FALSE(run_at_default_levels(wrong).passed());
 }
 
+// The round-off gate that follows the parameters: evaluated (evidence) where the 1e-12 bounds are
+// skipped, it passes at v0 = 10 and at tiny and huge scales; it measures a real round-off (not 0) that a
+// bound 10x tighter than its own rejects.
+TEST(EulerianGatesHaveTeeth, TranslationRoundOffFollowsTheParameters) {
+  const Case& c = named_case("eulerian1d/translation");
+  for (const char* assignment : {"v0=10", "L0=1e-2", "kappa=1e6"}) {
+    Parameters p = c.info.parameters;
+    apply_assignment(p, assignment);
+    const SweepResult result = run_sweep(c, p, c.info.resolution.default_levels);
+    ASSERT_EQ(result.gates.size(), 1u) << assignment;  // the measured bounds are skipped
+    EXPECT_TRUE(result.passed()) << assignment << ": " << result.gates[0].reason;
+  }
+  const SweepResult at_defaults = run_at_default_levels(c);
+  double worst = 0.0;
+  for (const auto& level : at_defaults.levels) worst = std::max(worst, level.metrics.at("roundoff_per_step").computed);
+  EXPECT_GT(worst, 0.05);
+  EXPECT_LE(worst, 1.0);
+  Case tight = c;
+  tight.gates = {upper_bound_gate("roundoff_per_step", 0.1 * 1.0, GateScope::AllLevels, "10x tighter")};
+  EXPECT_FALSE(run_at_default_levels(tight).passed());
+}
+
 TEST(EulerianCases, RejectInvalidParameters) {
   auto expect_rejected = [](const std::string& case_name, const std::string& assignment, const std::string& name) {
     const Case& c = named_case(case_name);
