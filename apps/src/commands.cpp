@@ -10,6 +10,7 @@
 #include "gate_table.hpp"
 #include "progress.hpp"
 #include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
 #include "rodvv/harness/registry.hpp"
 #include "rodvv/harness/sweep.hpp"
 #include "rodvv/reports/csv.hpp"
@@ -30,6 +31,9 @@ using harness::SweepResult;
 // All parameters of all cases are validated before the first level runs, so bad input costs nothing.
 std::vector<SweepResult> run_cases(const std::vector<const Case*>& cases, const CommonOptions& common,
                                    const std::vector<double>* levels_override) {
+  if (!(common.level_budget > 0.0 && common.level_budget <= 1e6))
+    throw InputError("--level-budget", fmt::format("invalid --level-budget {}: must be a number of seconds in (0, 1e6]",
+                                                   format_value(common.level_budget)));
   std::vector<harness::Parameters> parameters;
   for (const Case* c : cases) {
     harness::Parameters p = c->info.parameters;
@@ -50,7 +54,8 @@ std::vector<SweepResult> run_cases(const std::vector<const Case*>& cases, const 
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const auto levels = levels_override ? std::span<const double>(*levels_override)
                                         : harness::sweep_levels(*cases[i], common.extended);
-    results.push_back(harness::run_sweep(*cases[i], parameters[i], levels, progress.level_callback()));
+    results.push_back(
+        harness::run_sweep(*cases[i], parameters[i], levels, progress.level_callback(), common.level_budget));
     progress.case_finished(results.back());
   }
   return results;

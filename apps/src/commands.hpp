@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "rodvv/harness/sweep.hpp"
 #include "rodvv/harness/sweep_result.hpp"
 
 namespace rodvv::apps {
@@ -16,6 +17,7 @@ struct CommonOptions {
   std::vector<std::string> assignments;  // --set NAME=VALUE
   bool extended = false;                 // larger sweeps
   bool verbose = false;                  // per-level progress
+  double level_budget = harness::kDefaultLevelBudgetSeconds;  // --level-budget: seconds per level
 };
 
 struct RunOptions {

@@ -26,6 +26,9 @@ void add_common(CLI::App* command, rodvv::apps::CommonOptions& common, bool case
   command->add_option("--set", common.assignments,
                       "override a case parameter, NAME=VALUE (validated against its range); repeatable");
   command->add_flag("-v,--verbose", common.verbose, "progress per level on stderr");
+  command->add_option("--level-budget", common.level_budget,
+                      "wall-clock seconds one level may take (default 300); past it the level fails, naming the "
+                      "budget, and the run goes on");
 }
 
 }  // namespace

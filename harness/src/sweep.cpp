@@ -7,6 +7,7 @@
 #include <new>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/common/time_budget.hpp"
 #include "rodvv/common/validation.hpp"
 #include "rodvv/harness/order_fit.hpp"
 #include "rodvv/harness/richardson.hpp"
@@ -123,7 +124,7 @@ void split_level(Case& c, SolveLevel solve, MeasureSolution measure) {
 }
 
 SweepResult run_sweep(const Case& c, const Parameters& parameters, std::span<const double> levels,
-                      const ProgressCallback& progress) {
+                      const ProgressCallback& progress, double level_budget_seconds) {
   validate_levels(c, levels);
   if (c.check_parameters) c.check_parameters(parameters);
 
@@ -140,6 +141,7 @@ SweepResult run_sweep(const Case& c, const Parameters& parameters, std::span<con
     const auto start = Clock::now();
     const std::clock_t cpu_start = std::clock();
     try {
+      const TimeBudget budget(level_budget_seconds);
       LevelOutput output = c.run_level(parameters, levels[i]);
       level.metrics = std::move(output.metrics);
       level.series = std::move(output.series);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/common/time_budget.hpp"
 #include "rodvv/common/validation.hpp"
 #include "rodvv/solvers/elastica2d/banded_lu.hpp"
 #include "rodvv/solvers/elastica2d/contact_lcp.hpp"
@@ -139,6 +140,7 @@ void newton_active(const AugmentedSystem& sys, VectorXd& z, std::vector<double>&
     const VectorXd f = sys.residual(w, scratch);
     const double r = f.lpNorm<Eigen::Infinity>();
     state.residual = r;
+    check_time_budget(method, state.iterations, r);
     if (!std::isfinite(r))
       throw SolverError(method, "KKT residual with contact became non-finite", state.iterations, r);
     if (r <= options.tolerance) break;

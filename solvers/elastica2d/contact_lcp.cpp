@@ -6,6 +6,7 @@
 #include <string>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/common/time_budget.hpp"
 #include "rodvv/common/validation.hpp"
 #include "rodvv/solvers/contact/lcp.hpp"
 
@@ -180,6 +181,7 @@ void newton_lcp(const DiscreteLagrangian& lag, const std::vector<Obstacle>& obst
   for (std::size_t it = 0;; ++it) {
     const double r = natural_residual(lag, obstacles, pairs, z, lambda);
     state.residual = r;
+    check_time_budget(method, state.iterations, r);
     if (!std::isfinite(r))
       throw SolverError(method, "contact residual became non-finite", state.iterations, r);
     if (r <= options.tolerance) return;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/common/time_budget.hpp"
 #include "rodvv/common/validation.hpp"
 
 namespace rodvv::solvers::elastica2d::detail {
@@ -113,6 +114,7 @@ void newton(const DiscreteLagrangian& lag, VectorXd& z, const SolverOptions& opt
     if (!std::isfinite(r))
       throw SolverError(method, "KKT residual became non-finite", state.iterations, r);
     if (r <= options.tolerance) return;
+    check_time_budget(method, state.iterations, r);
     if (it == options.max_iterations)
       throw SolverError(method,
                         "Newton did not converge in " + std::to_string(options.max_iterations) +

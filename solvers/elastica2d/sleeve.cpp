@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/common/time_budget.hpp"
 #include "rodvv/common/validation.hpp"
 #include "rodvv/solvers/elastica2d/banded_lu.hpp"
 #include "rodvv/solvers/elastica2d/free_arm.hpp"
@@ -130,6 +131,7 @@ void newton(JointSystem& system, NewtonResult& state, bool joint, const SleeveSo
     JointSystem::Eval e = system.evaluate(state.phi, state.u);
     const double r = JointSystem::norm_inf(e, joint);
     state.residual = r;
+    check_time_budget("elastica2d sleeve Newton", state.iterations, r);
     if (!std::isfinite(r))
       throw SolverError(kMethod, "gradient became non-finite", state.iterations, r);
     if (r <= options.tolerance) return;

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/common/time_budget.hpp"
 #include "rodvv/common/validation.hpp"
 #include "rodvv/solvers/contact/velocity_qp.hpp"
 #include "rodvv/solvers/eulerian1d/discretisation.hpp"
@@ -224,6 +225,7 @@ Result simulate(const Problem& problem, const Settings& settings) {
   while (t < settings.t_end) {
     if (result.steps >= settings.max_steps)
       throw SolverError("eulerian1d", "step limit reached before t_end", result.steps, t);
+    check_time_budget("eulerian1d", result.steps, t);
     // CFL step. The characteristics move at v +- F c (Eulerian wave speed F c), but within one
     // step the velocity can jump by up to c |F - 1| (a released strain jump: the Riemann problem
     // of the bar), and the new velocity then advects xi. So the bound is

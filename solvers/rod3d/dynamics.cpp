@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/common/time_budget.hpp"
 #include "rodvv/common/validation.hpp"
 #include "rodvv/solvers/elastica2d/banded_lu.hpp"
 #include "rodvv/solvers/rod3d/discrete_energy.hpp"
@@ -258,6 +259,7 @@ DynamicState step(const RodModel& model, const DynamicState& state, double h, Ti
   VecX r = residual(c, y);
   double measure = scaled_measure(c, r, residual_scales(c, y));
   while (true) {
+    check_time_budget("rod3d dynamics " + where, iterations, measure);
     if (!std::isfinite(measure)) break;
     if (measure <= options.tolerance) {
       converged = true;

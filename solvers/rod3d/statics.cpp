@@ -12,6 +12,7 @@
 #include <Eigen/SparseLU>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/common/time_budget.hpp"
 #include "rodvv/common/validation.hpp"
 #include "rodvv/solvers/elastica2d/banded_lu.hpp"
 #include "rodvv/solvers/rod3d/discrete_energy.hpp"
@@ -271,6 +272,7 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
     zero_held(held, r);
     const Scales scales = residual_scales(model, state, lambda);
     outcome.residual = scaled_measure(model, r, scales, held);
+    check_time_budget(kMethod, outcome.iterations, outcome.residual);
     if (!std::isfinite(outcome.residual)) return outcome;
     if (outcome.residual <= options.tolerance) {
       outcome.converged = true;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/common/time_budget.hpp"
 #include "rodvv/common/validation.hpp"
 
 namespace rodvv::solvers::superhelix {
@@ -52,6 +53,7 @@ StaticResult newton_load_stepping(const StaticResidual& static_residual, const V
     for (std::size_t iteration = 0; iteration < options.max_iterations; ++iteration) {
       const double scale = std::max({k_max * result.q.lpNorm<Eigen::Infinity>(), k_max / length, load_scale});
       const double norm = residual.lpNorm<Eigen::Infinity>();
+      check_time_budget("superhelix Newton", result.iterations, norm);
       if (norm <= options.tolerance * scale) {
         converged = true;
         break;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/common/time_budget.hpp"
 #include "rodvv/common/validation.hpp"
 #include "rodvv/solvers/superhelix/dynamics.hpp"
 
@@ -17,7 +18,10 @@ namespace rodvv::solvers::superhelix::detail {
 inline void require_finite_step(const std::string& method, const DynamicState& from, const DynamicState& next,
                                 double h) {
   const bool q_finite = next.q.allFinite(), qdot_finite = next.qdot.allFinite();
-  if (q_finite && qdot_finite) return;
+  if (q_finite && qdot_finite) {
+    check_time_budget(method, 0, std::numeric_limits<double>::quiet_NaN());  // every step: no run hangs
+    return;
+  }
   const std::string what = !qdot_finite ? "the generalized velocities qdot" : "the generalized coordinates q";
   throw SolverError(method,
                     "the step from t = " + format_value(from.time) + " with h = " + format_value(h) + " made " +

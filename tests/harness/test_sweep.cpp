@@ -37,6 +37,25 @@ TEST(Sweep, RecordsCpuTimePerLevel) {
   }
 }
 
+// Every solver family's iteration loop checks the level's time budget: past it each level fails
+// naming the budget and the sweep goes on (no input hangs a run; issue 14 class 3).
+TEST(Sweep, EverySolverLoopStopsAtTheLevelBudget) {
+  for (const char* name : {"elastica/mattiasson-2/polygon", "elastica-contact/cavity-point/polygon",
+                           "elastica-contact/cavity-point/polygon-lcp", "sleeve/eshelby", "eulerian1d/impact",
+                           "superhelix/mattiasson-2", "superhelix/energy-decay", "rod3d/mattiasson-2",
+                           "rod3d/energy-in-time", "knot/trefoil-nodal"}) {
+    const Case* c = default_registry().find(name);
+    ASSERT_NE(c, nullptr) << name;
+    const SweepResult result = run_sweep(*c, c->info.parameters, c->info.resolution.default_levels, {}, 1e-9);
+    for (const auto& level : result.levels) {
+      ASSERT_TRUE(level.failure.has_value()) << name << " level " << level.level;
+      EXPECT_NE(level.failure->find("exceeded its time budget of 1e-09 s per level"), std::string::npos)
+          << name << ": " << *level.failure;
+    }
+    EXPECT_FALSE(result.passed()) << name;
+  }
+}
+
 TEST(Sweep, CountResolutionFitsInOneOverN) {
   Case c = synthetic_case(2.0);
   c.info.resolution = {"N", "elements", ResolutionScale::Count, {8, 16, 32}, {}};

@@ -31,11 +31,18 @@ void validate_levels(const Case& c, std::span<const double> levels);
 // was measured on, not the 1e6 elements that end in a bad_alloc or a run of hours.
 double finest_level_honoured(const Resolution& resolution);
 
+// The wall-clock budget of one level (rodvv --level-budget): the solvers' loops check it
+// (common/time_budget.hpp) and stop past it with a SolverError naming it, a level failure, so no
+// input hangs a run. 300 s: 7x the slowest level of the extended sweep (the plectoneme, ~40 s).
+inline constexpr double kDefaultLevelBudgetSeconds = 300.0;
+
 // Runs the sweep. InputError from parameters or levels propagates (nothing is run); a SolverError
 // at a level is recorded as that level's failure and the sweep goes on, and so is running out of
-// memory (std::bad_alloc), named as such: never an internal error.
+// memory (std::bad_alloc), named as such: never an internal error. Each level runs under a
+// TimeBudget of level_budget_seconds.
 SweepResult run_sweep(const Case& c, const Parameters& parameters, std::span<const double> levels,
-                      const ProgressCallback& progress = {});
+                      const ProgressCallback& progress = {},
+                      double level_budget_seconds = kDefaultLevelBudgetSeconds);
 
 // Orders (and Richardson/GCI for extrapolable metrics) of a case's metrics over finished levels.
 std::vector<MetricAnalysis> analyse_levels(const Case& c, const std::vector<LevelResult>& levels);
