@@ -89,11 +89,12 @@ TEST(EulerianGatesHaveTeeth, MassGateCatchesASmallLoss) {
 }
 
 // The round-off gate that follows the parameters: evaluated (evidence) where the 1e-12 bounds are
-// skipped, it passes at v0 = 10 and at tiny and huge scales; it measures a real round-off (not 0) that a
-// bound 10x tighter than its own rejects.
+// skipped, it passes at v0 = 10, at tiny and huge scales and at the ends of the ranges that needed
+// its per-cell term (2 steps at L0 = 1e3, cfl = 1); it measures a real round-off (not 0), which a
+// bound of half the measured value rejects.
 TEST(EulerianGatesHaveTeeth, TranslationRoundOffFollowsTheParameters) {
   const Case& c = named_case("eulerian1d/translation");
-  for (const char* assignment : {"v0=10", "L0=1e-2", "kappa=1e6"}) {
+  for (const char* assignment : {"v0=10", "L0=1e-2", "kappa=1e6", "L0=1e3", "cfl=1", "t_end=0.01", "kappa=0.01"}) {
     Parameters p = c.info.parameters;
     apply_assignment(p, assignment);
     const SweepResult result = run_sweep(c, p, c.info.resolution.default_levels);
@@ -104,9 +105,9 @@ TEST(EulerianGatesHaveTeeth, TranslationRoundOffFollowsTheParameters) {
   double worst = 0.0;
   for (const auto& level : at_defaults.levels) worst = std::max(worst, level.metrics.at("roundoff_per_step").computed);
   EXPECT_GT(worst, 0.05);
-  EXPECT_LE(worst, 1.0);
+  EXPECT_LE(worst, 4.0);
   Case tight = c;
-  tight.gates = {upper_bound_gate("roundoff_per_step", 0.1 * 1.0, GateScope::AllLevels, "10x tighter")};
+  tight.gates = {upper_bound_gate("roundoff_per_step", 0.5 * worst, GateScope::AllLevels, "half the measured")};
   EXPECT_FALSE(run_at_default_levels(tight).passed());
 }
 

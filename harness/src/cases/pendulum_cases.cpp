@@ -153,6 +153,21 @@ double energy_above_rest(const ref::PendulumMotion& motion) {
   return (ref::energy(motion) + omega * omega) / (omega * omega);
 }
 
+// The integrator refuses a horizon of more than 1e9 steps as a bad 'dt'; here dt is a level and the
+// horizon comes from 'periods' (and the period, which grows without bound as theta0 -> 180 deg), so
+// the refusal names them.
+Trajectory integrate_horizon(const pend::Problem& problem, const pend::Settings& settings) {
+  try {
+    return pend::integrate(problem, settings);
+  } catch (const InputError& error) {
+    if (error.parameter() != "dt") throw;
+    throw InputError("periods", fmt::format("invalid parameter 'periods': the horizon t_end = {} takes more than 1e9 "
+                                            "steps of dt = {} (omega dt = {}); lower 'periods' or use coarser levels",
+                                            format_value(problem.t_end), format_value(settings.dt),
+                                            format_value(problem.omega * settings.dt)));
+  }
+}
+
 MetricSample error_sample(double computed, double reference) {
   return {computed, reference, std::abs(computed - reference)};
 }
@@ -172,7 +187,7 @@ Solution solve_accuracy_level(const Motion& motion, const pend::MethodInfo& meth
   } else {
     settings.dt = level / omega;  // the level is omega dt
   }
-  return pend::integrate(problem, settings);
+  return integrate_horizon(problem, settings);
 }
 
 // Reads only the trajectory's samples (t, theta, theta'): a trajectory file from another integrator
@@ -343,7 +358,7 @@ LevelOutput run_energy_level(const pend::MethodInfo& method, const Parameters& p
   // Keep at most ~2e5 samples (>= 200 per period at 1000 periods) so long runs stay small in memory;
   // the energy maximum within a period is then sampled to ~1e-4 relative.
   settings.record_every = std::max<std::size_t>(1, static_cast<std::size_t>(t_end / dt / 2e5));
-  const Trajectory trajectory = pend::integrate({exact.omega, exact.theta0, 0.0, t_end}, settings);
+  const Trajectory trajectory = integrate_horizon({exact.omega, exact.theta0, 0.0, t_end}, settings);
   // Early / late windows of one period each: a bounded error gives a ratio ~1, a linear drift a
   // ratio ~ periods.
   const auto stats = invariants::pendulum_energy_statistics(trajectory, exact.omega, 1.0 / periods);

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -384,7 +385,19 @@ Case critical_case(e2d::Scheme scheme) {
   c.info.parameters = {stiffness("EA", 50.0, "axial stiffness (L = EI = 1)"),
                        stiffness("GA", 20.0, "shear stiffness")};
   c.check_parameters = [](const Parameters& p) {
-    ref::reissner_pinned_critical_load(1.0, 1.0, parameter_value(p, "EA"), parameter_value(p, "GA"));
+    // The reference names its arguments (axial_stiffness, shear_stiffness); the user set EA and GA.
+    try {
+      ref::reissner_pinned_critical_load(1.0, 1.0, parameter_value(p, "EA"), parameter_value(p, "GA"));
+    } catch (const InputError& error) {
+      const std::string name = error.parameter() == "axial_stiffness" ? "EA"
+                               : error.parameter() == "shear_stiffness" ? "GA"
+                                                                        : error.parameter();
+      std::string message = error.what();
+      for (const auto& [from, to] : {std::pair<std::string, std::string>{"'axial_stiffness'", "'EA'"},
+                                     std::pair<std::string, std::string>{"'shear_stiffness'", "'GA'"}})
+        if (const auto at = message.find(from); at != std::string::npos) message.replace(at, from.size(), to);
+      throw InputError(name, message);
+    }
   };
   c.info.resolution = {"N", "number of elements", ResolutionScale::Count, {16, 32, 64, 128},
                        {16, 32, 64, 128, 256, 512}};

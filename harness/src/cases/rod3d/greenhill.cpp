@@ -24,6 +24,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <fmt/format.h>
+
 #include "../case_builder.hpp"
 #include "buckling_threshold.hpp"
 #include "rod3d_cases.hpp"
@@ -31,6 +33,7 @@
 #include "rodvv/common/validation.hpp"
 #include "rodvv/references/twisted_rod.hpp"
 #include "rodvv/solvers/rod3d/linearized.hpp"
+#include "rodvv/solvers/rod3d/model.hpp"
 #include "rodvv/solvers/rod3d/state.hpp"
 
 namespace rodvv::harness::rod3d_cases {
@@ -163,6 +166,22 @@ void add_greenhill(Registry& registry) {
        make_parameter("rhoS", 0.4, 0.0, 1e12, true, false, "mass / length", "line density (mass metric of the eigenproblem)")},
       element_levels("number of edges", {24, 48, 96}, {24, 48, 96, 192}), std::move(metrics), std::move(gates), run);
   c.info.resolution.finest_honoured = double(rod::kMaxModalElements);  // the dense linearisation's limit
+  // The twist the search reaches, 1.25 M_cr L / GJ (M_cr ~ 9 to 13 B / L), grows as B/GJ; the nodal rod
+  // takes end rotations of at most kMaxEndRotation (1000 turns).
+  c.check_parameters = [](const Parameters& p) {
+    const Column col = column_of(p);
+    for (const auto& load : kLoads) {
+      const double twist = 1.25 * reference_moment(col, load.ends, load.euler_fraction * euler_load(col, load.ends)) *
+                           col.L / col.GJ;
+      if (!(twist <= rod::kMaxEndRotation))
+        throw InputError("B", fmt::format("invalid parameter 'B' = {}: with GJ = {} the critical twist of the {} column "
+                                          "is {} rad, beyond the {} rad (1000 turns) an end of the nodal rod may be "
+                                          "turned; needs B / GJ below about {}",
+                                          format_value(col.B), format_value(col.GJ), load.name, format_value(twist),
+                                          format_value(rod::kMaxEndRotation),
+                                          format_value(col.B / col.GJ * rod::kMaxEndRotation / twist)));
+    }
+  };
   registry.add(std::move(c));
 }
 
