@@ -172,13 +172,20 @@ BucklingResult critical_loads(const BucklingProblem& column, const Discretisatio
   validate(discretisation);
   require_at_least("modes", modes, 1);
 
-  const DiscreteLagrangian lag(straight_column(column), discretisation);
+  // The pencil is solved for the unit column (L = EI = 1) and its loads scaled by EI / L^2, its stations
+  // by L: the problem is homogeneous, so that is exact. Solved at the user's L and EI, the geometric
+  // stiffness - the difference of two Hessians that both carry the bending terms EI / h against the
+  // load's h - lost eps EI / (h^2) to cancellation (EI = 1e12 or L = 1e-6: not positive definite, or
+  // loads off by 30 %).
+  const BucklingProblem unit{column.supports, 1.0, 1.0};
+  const double load_unit = column.bending_stiffness / (column.length * column.length);
+  const DiscreteLagrangian lag(straight_column(unit), discretisation);
   const std::size_t n = lag.elements(), angles = lag.angle_count();
   const double h = lag.element_length();
 
   // The straight state: r_i = (s_i, 0), all angles 0, multipliers 0; then n_i = -e_x on every edge.
   VectorXd z = VectorXd::Zero(idx(lag.size()));
-  for (std::size_t i = 0; i <= n; ++i) z[idx(lag.x(i))] = i == n ? column.length : static_cast<double>(i) * h;
+  for (std::size_t i = 0; i <= n; ++i) z[idx(lag.x(i))] = i == n ? unit.length : static_cast<double>(i) * h;
   const Sparse unloaded = lag.hessian(z);
   for (std::size_t i = 0; i < n; ++i) z[idx(lag.nx(i))] = -1.0;
   const Sparse loaded = lag.hessian(z);
@@ -240,10 +247,10 @@ BucklingResult critical_loads(const BucklingProblem& column, const Discretisatio
     const VectorXd v = llt.matrixU().solve(eigen.eigenvectors().col(idx(m)));
     const VectorXd dz = basis * v;
     BucklingMode mode;
-    mode.load = eigen.eigenvalues()[idx(m)];
+    mode.load = eigen.eigenvalues()[idx(m)] * load_unit;
     for (std::size_t j = 0; j < angles; ++j) {
       const double offset = discretisation.scheme == Scheme::Polygon ? 0.5 : 0.0;
-      mode.s.push_back(j == n ? column.length : (static_cast<double>(j) + offset) * h);
+      mode.s.push_back(j == n ? column.length : (static_cast<double>(j) + offset) * h * column.length);
       mode.theta.push_back(dz[primal_slot[lag.angle(j)]]);
     }
     normalise(mode);

@@ -21,6 +21,7 @@
 #include <numbers>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "rodvv/common/errors.hpp"
@@ -228,6 +229,24 @@ TEST_P(Elastica2dBuckling, LoadsScaleAsStiffnessOverLengthSquared) {
     EXPECT_TRUE(is_close(scaled.modes[k].load, unit.modes[k].load * 7.0 / 6.25,
                          4.0 * n * kEpsilon * 12.0 * n * n / unit.modes[k].load, 0.0))
         << "mode " << k + 1;
+}
+
+// At the ends of the ranges the cases offer (L in [1e-6, 1e6], EI up to 1e12) the loads are still
+// EI / L^2 times the unit column's (the pencil is solved for the unit column and scaled; solved at
+// the user's scales, the geometric stiffness lost eps EI / h^2 to cancellation: at EI = 1e12 it was
+// not positive definite, at L = 1e-6 the loads were off by 30 %), and the modes' stations scale by L.
+TEST_P(Elastica2dBuckling, LoadsAtExtremeScalesAreTheUnitColumnsScaled) {
+  const auto [scheme, supports] = GetParam();
+  const std::size_t n = 64;
+  const auto unit = loads(supports, scheme, n, 2);
+  for (const auto [L, EI] : {std::pair{1e-6, 1e12}, std::pair{1e6, 1e-6}, std::pair{1.0, 1e12}, std::pair{1e-6, 1.0}}) {
+    const auto scaled = loads(supports, scheme, n, 2, L, EI);
+    for (std::size_t k = 0; k < 2; ++k) {
+      EXPECT_TRUE(is_close(scaled.modes[k].load, unit.modes[k].load * EI / (L * L), 4.0 * kEpsilon, 0.0))
+          << "L = " << L << ", EI = " << EI << ", mode " << k + 1;
+      EXPECT_TRUE(is_close(scaled.modes[k].s.back(), unit.modes[k].s.back() * L, 4.0 * kEpsilon, 0.0));
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(

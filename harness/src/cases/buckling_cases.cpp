@@ -166,7 +166,7 @@ LevelOutput run_level(e2d::EndSupports supports, e2d::Scheme scheme, const Param
   for (int k = 1; k <= 2; ++k) {
     const e2d::BucklingMode& mode = result.modes[static_cast<std::size_t>(k - 1)];
     const double exact = euler_mode_coefficient(supports, k) * EI / (L * L);
-    output.metrics[fmt::format("P{}", k)] = {mode.load, exact, std::abs(mode.load - exact) / exact};
+    output.metrics[fmt::format("P{}", k)] = {mode.load, exact, std::abs(mode.load - exact) / exact, 1.0};  // relative: size 1
     const ExactCurve curve = exact_curve(supports, k, L);
     const double error = shape_error(mode, supports, k, curve, L);
     output.metrics[fmt::format("mode{}_shape", k)] = {error, 0.0, error, 1.0};  // modes scaled to max |theta| = 1
