@@ -22,6 +22,7 @@
 #include "rod3d_cases.hpp"
 #include "rod3d_support.hpp"
 #include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
 #include "rodvv/references/rod3d.hpp"
 #include "rodvv/solvers/rod3d/linearized.hpp"
 
@@ -38,6 +39,37 @@ constexpr double kPi = std::numbers::pi;
 // decouple exactly on a straight uniform rod; the tilted frame mixes them at round-off (measured
 // <= 1e-12 off-family content up to N = 128 at the default parameters).
 constexpr double kPurity = 1e-6;
+
+// The eigensolver's round-off on the lowest frequency is eps (omega_max / omega_min)^2 (a backward
+// error eps |A|_2 on each eigenvalue), with omega_max^2 the top of the discrete spectrum: bending
+// ~16 EI / (rho S ebar^4), torsion ~4 GJ / (rho I0 ebar^2), and omega_min the lowest closed-form
+// frequency. At the finest default level (N = 64) it must stay below 1e-6 of omega_min^2 (defaults:
+// 8.8e-9), or no level can measure an O(h^2) error of ~1e-5: parameters that spread the families
+// further (EI1 = 1e12: 0.55; rho I0 = 1e12; L = 1e6, where bending and torsion scale apart as 1/L^2
+// and 1/L) are refused, naming what sets each end.
+constexpr double kFinestDefaultEdges = 64.0;
+constexpr double kMaxEigenRoundOff = 1e-6;
+
+void check_frequency_spread(const Parameters& p) {
+  const double L = parameter_value(p, "L"), GJ = parameter_value(p, "GJ"), EI1 = parameter_value(p, "EI1"),
+               EI2 = parameter_value(p, "EI2"), rhoS = parameter_value(p, "rhoS"), rhoI0 = parameter_value(p, "rhoI0");
+  const double ebar = L / kFinestDefaultEdges, beta1 = 1.87510406871196;
+  const double top_bending = 16.0 * std::max(EI1, EI2) / (rhoS * std::pow(ebar, 4)), top_twist = 4.0 * GJ / (rhoI0 * ebar * ebar);
+  const double low_bending = std::pow(beta1, 4) * std::min(EI1, EI2) / (rhoS * std::pow(L, 4));
+  const double low_twist = std::pow(kPi / (2.0 * L), 2) * GJ / rhoI0;
+  const double spread = std::max(top_bending, top_twist) / std::min(low_bending, low_twist);
+  const double round_off = std::numeric_limits<double>::epsilon() * spread;
+  if (!(round_off <= kMaxEigenRoundOff))
+    throw InputError(top_bending >= top_twist ? (EI1 >= EI2 ? "EI1" : "EI2") : "GJ",
+                     fmt::format("invalid parameters: the frequencies spread over (omega_max / omega_min)^2 = {} at N = "
+                                 "{} (omega_max from {}, omega_min from {}), so the eigensolver's round-off on the lowest "
+                                 "frequency, eps x that = {}, exceeds {}; bring EI1, EI2, GJ, rhoS, rhoI0 and L closer "
+                                 "to each other's scales",
+                                 format_value(spread), kFinestDefaultEdges,
+                                 top_bending >= top_twist ? "bending (EI / rhoS)" : "torsion (GJ / rhoI0)",
+                                 low_bending <= low_twist ? "bending" : "torsion", format_value(round_off),
+                                 format_value(kMaxEigenRoundOff)));
+}
 
 LevelOutput run(const Parameters& p, double level) {
   const double L = parameter_value(p, "L"), GJ = parameter_value(p, "GJ"), EI1 = parameter_value(p, "EI1"),
@@ -143,7 +175,7 @@ void add_modes(Registry& registry) {
   gates.push_back(upper_bound_gate("torsion_discrete", 1.0, GateScope::AllLevels,
                                    "the discrete torsional frequencies in closed form, to the eigensolver's round-off "
                                    "eps omega_max^2"));
-  registry.add(make_case(
+  Case c = make_case(
       "rod3d",
       {"rod3d/modes", "bending and torsional frequencies of a straight cantilever, tilted clamp",
        "Straight inextensible cantilever clamped with a general tilted frame, EI1 != EI2 != GJ, no load; small "
@@ -163,7 +195,9 @@ void add_modes(Registry& registry) {
        make_parameter("rhoS", 0.8, 0.0, 1e12, true, false, "mass/length", "line density"),
        make_parameter("rhoI0", 0.07, 0.0, 1e12, true, false, "mass length", "polar mass moment per unit length")},
       element_levels("number of edges", {8, 16, 32, 64}, {8, 16, 32, 64, 128}), std::move(metrics), std::move(gates),
-      run));
+      run);
+  c.check_parameters = check_frequency_spread;
+  registry.add(std::move(c));
 }
 
 }  // namespace rodvv::harness::rod3d_cases
