@@ -57,16 +57,17 @@ LevelOutput run(const Parameters& p, double level) {
   const std::size_t n = element_count(level);
   const Tip tip = solve_tip(p, n), finer = solve_tip(p, 2 * n);
   LevelOutput output;
-  rod3d_cases::add_bathe_bolourchi_metrics(output, tip, finer);
+  const double R = parameter_value(p, "R"), EI = parameter_value(p, "EI"), P = parameter_value(p, "P");
+  rod3d_cases::add_bathe_bolourchi_metrics(output, tip, finer, R);
   // The nodal rod's tip, Richardson-extrapolated from 64 and 128 edges (its error there is O(h^4),
   // measured 2e-5 against the Super-Helix's extrapolation, 27 x below this case's error at N = 32).
-  const double R = parameter_value(p, "R"), EI = parameter_value(p, "EI"), P = parameter_value(p, "P");
   const Tip coarse_nodal = rod3d_cases::nodal_bathe_bolourchi_tip(R, EI, P, 64);
   const Tip fine_nodal = rod3d_cases::nodal_bathe_bolourchi_tip(R, EI, P, 128);
   const Tip nodal{(4.0 * fine_nodal.along_load - coarse_nodal.along_load) / 3.0,
                   (4.0 * fine_nodal.in_plane - coarse_nodal.in_plane) / 3.0};
   output.metrics["tip_along_load_vs_nodal"] = error_sample(finer.along_load, nodal.along_load);
   output.metrics["tip_in_plane_vs_nodal"] = error_sample(finer.in_plane, nodal.in_plane);
+  output.metrics["tip_along_load_vs_nodal"].scale = output.metrics["tip_in_plane_vs_nodal"].scale = R;  // as above
   return output;
 }
 
@@ -87,7 +88,7 @@ void add_bathe_bolourchi(Registry& registry) {
   std::vector<MetricSpec> metrics = rod3d_cases::bathe_bolourchi_metric_specs();
   metrics.push_back(error_metric("tip_along_load_vs_nodal", "length", "u.load at 2N vs the nodal rod (extrapolated)", 2.0));
   metrics.push_back(error_metric("tip_in_plane_vs_nodal", "length", "|u_plane| at 2N vs the nodal rod (extrapolated)", 2.0));
-  registry.add(make_case(
+  Case c = make_case(
       "superhelix",
       {"superhelix/bathe-bolourchi", "Bathe-Bolourchi 45-degree bend under an out-of-plane tip load (Super-Helix)",
        "Naturally curved Super-Helix cantilever, 45-degree arc of radius R (tilted plane), EI1 = EI2 = GJ = EI; dead "
@@ -97,7 +98,9 @@ void add_bathe_bolourchi(Registry& registry) {
        "rod-3d/bathe-bolourchi"},
       rod3d_cases::bathe_bolourchi_parameters(),
       element_levels("number of elements (the level also solves 2N)", {8, 16, 32}, {8, 16, 32, 64}),
-      std::move(metrics), std::move(gates), run));
+      std::move(metrics), std::move(gates), run);
+  c.check_parameters = rod3d_cases::check_bathe_bolourchi_parameters;
+  registry.add(std::move(c));
 }
 
 }  // namespace rodvv::harness::superhelix_cases
