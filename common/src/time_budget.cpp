@@ -1,6 +1,7 @@
 #include "rodvv/common/time_budget.hpp"
 
 #include <algorithm>
+#include <string>
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
@@ -27,9 +28,9 @@ TimeBudget::~TimeBudget() {
   budget_seconds = previous_seconds_;
 }
 
-void check_time_budget(const std::string& method, std::size_t iterations, double residual) {
+void check_time_budget(std::string_view method, std::size_t iterations, double residual) {
   if (deadline && Clock::now() > *deadline)
-    throw SolverError(method,
+    throw SolverError(std::string(method),
                       "exceeded its time budget of " + format_value(budget_seconds) +
                           " s per level (rodvv --level-budget)",
                       iterations, residual);

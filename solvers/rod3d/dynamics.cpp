@@ -243,6 +243,7 @@ DynamicState step(const RodModel& model, const DynamicState& state, double h, Ti
   const auto n = Eigen::Index(c.layout.size());
   const std::string where = "step " + std::to_string(state.steps + 1) + " (t = " + format_value(state.time) +
                             ", h = " + format_value(h) + ")";
+  const std::string budget_method = "rod3d dynamics " + where;  // named once, checked every iteration
   const double floor = 64.0 * kEps * model.length;
 
   // Predictor: constant velocity (z_n + h v_n), unless it leaves the chart of z_n.
@@ -259,7 +260,7 @@ DynamicState step(const RodModel& model, const DynamicState& state, double h, Ti
   VecX r = residual(c, y);
   double measure = scaled_measure(c, r, residual_scales(c, y));
   while (true) {
-    check_time_budget("rod3d dynamics " + where, iterations, measure);
+    check_time_budget(budget_method, iterations, measure);
     if (!std::isfinite(measure)) break;
     if (measure <= options.tolerance) {
       converged = true;

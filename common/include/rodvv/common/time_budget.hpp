@@ -6,7 +6,7 @@
 #include <chrono>
 #include <cstddef>
 #include <optional>
-#include <string>
+#include <string_view>
 
 namespace rodvv {
 
@@ -25,7 +25,8 @@ class TimeBudget {
 };
 
 // Throws SolverError(method, "exceeded its time budget of ... s", iterations, residual) when this
-// thread has a deadline and it has passed; free otherwise (one clock read).
-void check_time_budget(const std::string& method, std::size_t iterations, double residual);
+// thread has a deadline and it has passed; free otherwise (one clock read, no allocation: it is
+// called on every Newton iteration and time step).
+void check_time_budget(std::string_view method, std::size_t iterations, double residual);
 
 }  // namespace rodvv
