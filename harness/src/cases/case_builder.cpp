@@ -6,10 +6,22 @@
 #include <Eigen/Geometry>
 #include <fmt/format.h>
 
+#include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
 #include "rodvv/harness/trajectory_metrics.hpp"
 #include "rodvv/invariants/noether3d.hpp"
 
 namespace rodvv::harness::cases {
+
+void check_load_window(const Parameters& p, const std::string& length, double low, double high, const std::string& why) {
+  const double arm = parameter_value(p, length), EI = parameter_value(p, "EI"), P = parameter_value(p, "P");
+  const double load = P * arm * arm / EI;
+  if (!(load >= low && load <= high))
+    throw InputError("P", fmt::format("invalid parameter 'P' = {}: the load P {}^2 / EI = {} ({} = {}, EI = {}) must be "
+                                      "in [{:g}, {:g}] ({})",
+                                      format_value(P), length, format_value(load), length, format_value(arm),
+                                      format_value(EI), low, high, why));
+}
 
 MetricSample error_sample(double computed, double reference) { return {computed, reference, std::abs(computed - reference)}; }
 MetricSample value_sample(double value) { return {value, 0.0, std::abs(value), std::nullopt}; }

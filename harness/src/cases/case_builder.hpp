@@ -36,6 +36,11 @@ std::size_t element_count(double level);
 // regression of the error constant by more than 2x turns red; skipped at non-default parameters.
 GateSpec measured_bound(const std::string& metric, double at_finest, double h_finest, double order);
 
+// The load a case's levels resolve, P length^2 / EI in [low, high] (a window measured per case, with
+// the reason beyond its ends in `why`); InputError naming P otherwise. `length` names the parameter
+// that sets the lever arm (L, R).
+void check_load_window(const Parameters& p, const std::string& length, double low, double high, const std::string& why);
+
 struct CaseText {
   std::string name, title, physics, reference, citation, method;
   std::string group = {};  // cases compared side by side (report overlays); empty: the case's own name

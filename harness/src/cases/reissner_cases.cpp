@@ -23,8 +23,8 @@
 
 #include <fmt/format.h>
 
+#include "case_builder.hpp"
 #include "rodvv/common/errors.hpp"
-#include "rodvv/common/validation.hpp"
 #include "rodvv/harness/registry.hpp"
 #include "rodvv/harness/trajectory_metrics.hpp"
 #include "rodvv/invariants/planar_noether.hpp"
@@ -319,13 +319,9 @@ Case cantilever_case(e2d::Scheme scheme) {
   // arcs' H spread order leaves its window, at 100 six gates fail (the tip curls past the levels'
   // reach); at 1e-4 and below the tip errors reach their round-off floors (orders undefined).
   c.check_parameters = [](const Parameters& p) {
-    const double L = parameter_value(p, "L"), EI = parameter_value(p, "EI"), P = parameter_value(p, "P");
-    const double load = P * L * L / EI;
-    if (!(load >= 0.005 && load <= 20.0))
-      throw InputError("P", fmt::format("invalid parameter 'P' = {}: the load P L^2 / EI = {} (L = {}, EI = {}) must be "
-                                        "in [0.005, 20] (the table's 5): beyond 20 the default levels do not reach the "
-                                        "asymptotic range, below 0.005 the tip errors are at round-off",
-                                        format_value(P), format_value(load), format_value(L), format_value(EI)));
+    cases::check_load_window(p, "L", 0.005, 20.0,
+                             "the table's 5: beyond 20 the default levels do not reach the asymptotic range, below "
+                             "0.005 the tip errors are at round-off");
   };
   const CantileverBounds& b = scheme == e2d::Scheme::Polygon ? kPolygonBounds : kArcsBounds;
   const double h = 1.0 / 256;

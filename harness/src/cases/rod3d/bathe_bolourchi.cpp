@@ -15,14 +15,10 @@
 #include <cmath>
 #include <numbers>
 
-#include <fmt/format.h>
-
 #include "../case_builder.hpp"
 #include "bathe_bolourchi.hpp"
 #include "rod3d_cases.hpp"
 #include "rod3d_support.hpp"
-#include "rodvv/common/errors.hpp"
-#include "rodvv/common/validation.hpp"
 #include "rodvv/solvers/rod3d/solution.hpp"
 #include "rodvv/solvers/rod3d/statics.hpp"
 
@@ -76,14 +72,9 @@ Parameters bathe_bolourchi_parameters() {
 }
 
 void check_bathe_bolourchi_parameters(const Parameters& p) {
-  const double R = parameter_value(p, "R"), EI = parameter_value(p, "EI"), P = parameter_value(p, "P");
-  const double load = P * R * R / EI;
-  if (!(load >= 0.5 && load <= 40.0))
-    throw InputError("P", fmt::format("invalid parameter 'P' = {}: the load P R^2 / EI = {} (R = {}, EI = {}) must be "
-                                      "in [0.5, 40] (the benchmark's 7.2; beyond 40 the default levels do not reach "
-                                      "the asymptotic range, below 0.5 the self-convergence and the nodal oracle "
-                                      "reach their round-off floors)",
-                                      format_value(P), format_value(load), format_value(R), format_value(EI)));
+  check_load_window(p, "R", 0.5, 40.0,
+                    "the benchmark's 7.2; beyond 40 the default levels do not reach the asymptotic range, below 0.5 "
+                    "the self-convergence and the nodal oracle reach their round-off floors");
 }
 
 void add_bathe_bolourchi_metrics(LevelOutput& output, const BatheBolourchiTip& tip, const BatheBolourchiTip& finer,
