@@ -540,11 +540,13 @@ StraightRodModes straight_rod_modes(const RodModel& model) {
   StraightRodModes modes;
   modes.frequencies = std::move(scaled.omega);
   modes.shapes = std::move(scaled.shapes);
-  if (!std::isfinite(modes.frequencies[n - 1]))
-    throw SolverError("superhelix modes", "a massless direction at round-off (M numerically singular)", 0, 0.0);
+  // The top of the spectrum may reach round-off (mu <= 0: omega = +inf, zero shape, zero share) when the
+  // stiffnesses or inertias are many decades apart; the low modes keep their accuracy (above), so this
+  // is reported, not refused: a caller that needs a mode checks that its frequency is finite.
   modes.omega_squared_min = modes.frequencies[0] * modes.frequencies[0];
   modes.component_share = MatX::Zero(3, n);
   for (Eigen::Index k = 0; k < n; ++k) {
+    if (!std::isfinite(modes.frequencies[k])) continue;
     const auto v = modes.shapes.col(k);
     Vec3 part = Vec3::Zero();
     for (int c = 0; c < 3; ++c)  // v_c^T M_cc v_c over the coordinates of component c

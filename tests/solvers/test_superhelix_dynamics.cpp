@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <iostream>
 #include <numbers>
 #include <string>
@@ -317,6 +318,38 @@ TEST(SuperHelixDynamics, StraightRodModesSplitIntoTwistAndTwoBendingFamilies) {
       if (with_rotary.component_share(0, k) > 0.5) twist.push_back(with_rotary.frequencies[k]);
     ASSERT_EQ(twist.size(), n);
     EXPECT_NEAR(twist[0] / family[0][0], 1.0, 1e-9) << n;
+  }
+}
+
+TEST(SuperHelixDynamics, StraightRodModesKeepTheLowModesWhenTheTopReachesRoundOff) {
+  // EI1 = 1e12 puts the stiff plane's 1 / omega^2 below the eigensolver's backward error eps / omega_min^2
+  // at N = 32: those directions come out as omega = +inf with a zero shape and share (they threw before),
+  // and the families that do not involve EI1 (twist, kappa2: decoupled on the straight rod) are those of
+  // the rod with a moderate EI1, to the round-off eps (omega / omega_min)^2.
+  sh::RodModel stiff = straight_model(32);
+  stiff.stiffness = Vec3(0.55, 1e12, 3.1);
+  sh::RodModel moderate = straight_model(32);
+  moderate.stiffness = Vec3(0.55, 1e3, 3.1);
+  const sh::StraightRodModes a = sh::straight_rod_modes(stiff), b = sh::straight_rod_modes(moderate);
+  ASSERT_FALSE(std::isfinite(a.frequencies[a.frequencies.size() - 1])) << "the test needs the top at round-off";
+  const auto low_families = [](const sh::StraightRodModes& modes) {
+    std::vector<double> low;
+    for (Eigen::Index k = 0; k < modes.frequencies.size(); ++k) {
+      if (!std::isfinite(modes.frequencies[k])) {
+        EXPECT_EQ(modes.component_share.col(k).sum(), 0.0);
+        EXPECT_EQ(modes.shapes.col(k).norm(), 0.0);
+        continue;
+      }
+      if (modes.component_share(1, k) < 0.5 && low.size() < 6) low.push_back(modes.frequencies[k]);
+    }
+    return low;
+  };
+  const std::vector<double> low_a = low_families(a), low_b = low_families(b);
+  ASSERT_EQ(low_a.size(), 6u);
+  ASSERT_EQ(low_b.size(), 6u);
+  for (std::size_t k = 0; k < 6; ++k) {
+    const double round_off = 1e3 * std::numeric_limits<double>::epsilon() * std::pow(low_a[k] / a.frequencies[0], 2);
+    EXPECT_NEAR(low_a[k] / low_b[k], 1.0, round_off) << k;
   }
 }
 

@@ -44,6 +44,7 @@
 #include <fmt/format.h>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
 #include "case_builder.hpp"
 #include "superhelix/superhelix_problems.hpp"
 #include "rodvv/harness/registry.hpp"
@@ -394,6 +395,35 @@ constexpr std::size_t kBendingModes = 3, kTwistModes = 2;
 // whose clamped-free modes are sin(k s) at the nodes with the continuous k = (2n - 1) pi / (2L) and
 // omega_d^2 = (6 c^2 / ell^2) (1 - cos k ell) / (2 + cos k ell), c^2 = GJ / rho I0: relative error
 // (k ell)^2 / 24 + O(ell^4), from above (gated to round-off as torsion_discrete_relative).
+// The eigensolver's relative error on a mode, eps (omega_k / omega_min)^2 (straight_rod_modes), must stay
+// far below the smallest discretisation error the sweep measures at the finest default level (the first
+// torsional mode, relative (k ell)^2 / 24 = 2.5e-5 at N = 64) for the orders to mean anything: at most
+// 1 % of it. Closed forms give omega_min (the lowest of the three families) and the highest mode the
+// case classifies (the third bending mode of the stiffer plane or the second torsional mode). Defaults:
+// 1.3e-13. GJ, EI1 or EI2 = 1e12 or rhoS = 1e12 put it at 1e-3 .. 1e2 (before: twist orders 1.8, or
+// every level failed on a mode lost to round-off).
+constexpr double kMaxModeRoundOff = 2.5e-7;
+void check_mode_spread(const Parameters& p) {
+  const double L = parameter_value(p, "L"), GJ = parameter_value(p, "GJ"), EI1 = parameter_value(p, "EI1"),
+               EI2 = parameter_value(p, "EI2"), rhoS = parameter_value(p, "rhoS"), rhoI0 = parameter_value(p, "rhoI0");
+  const double twist_speed = std::sqrt(GJ / rhoI0);
+  const double twist_low = kPi / (2.0 * L) * twist_speed, twist_high = 3.0 * twist_low;
+  const double bending_low = ref::cantilever_frequency(1, std::min(EI1, EI2), rhoS, L);
+  const double bending_high = ref::cantilever_frequency(kBendingModes, std::max(EI1, EI2), rhoS, L);
+  const double low = std::min(twist_low, bending_low), high = std::max(twist_high, bending_high);
+  const double round_off = kEps * (high / low) * (high / low);
+  if (!(round_off <= kMaxModeRoundOff))
+    throw InputError(twist_high >= bending_high ? "GJ" : (EI1 >= EI2 ? "EI1" : "EI2"),
+                     fmt::format("invalid parameters: the modes the case measures spread over (omega_high / omega_min)^2 "
+                                 "= {} (omega_high from {}, omega_min from {}), so the eigensolver's round-off on them, "
+                                 "eps x that = {}, exceeds {} (1 % of the finest level's smallest discretisation "
+                                 "error); bring EI1, EI2, GJ, rhoS, rhoI0 and L closer to each other's scales",
+                                 format_value((high / low) * (high / low)),
+                                 twist_high >= bending_high ? "torsion (GJ / rhoI0)" : "bending (EI / rhoS)",
+                                 twist_low <= bending_low ? "torsion" : "bending", format_value(round_off),
+                                 format_value(kMaxModeRoundOff)));
+}
+
 LevelOutput run_modes(const Parameters& p, double level) {
   const double L = parameter_value(p, "L"), GJ = parameter_value(p, "GJ"), EI1 = parameter_value(p, "EI1"),
                EI2 = parameter_value(p, "EI2"), rhoS = parameter_value(p, "rhoS"), rhoI0 = parameter_value(p, "rhoI0");
@@ -905,6 +935,7 @@ void register_superhelix_cases(Registry& registry) {
          make_parameter("rhoS", 0.8, 0.0, 1e12, true, false, "mass/length", "line density"),
          make_parameter("rhoI0", 0.07, 0.0, 1e12, true, false, "mass length", "polar mass moment per unit length")},
         elements(levels, {8, 16, 32, 64, 128, 256}), std::move(metrics), std::move(gates), run_modes);
+    c.check_parameters = check_mode_spread;
     c.info.group = "rod-3d/modes";
     c.info.method = std::string(kMethod) +
                     "; linearised about the straight state: the full 3N generalised eigenproblem K v = omega^2 M v "

@@ -138,7 +138,9 @@ VecX bending_frequencies(const RodModel& model, std::size_t count);
 // end_moment otherwise (the geometric stiffness of loads is not part of K).
 // Accuracy: a backward error of a small multiple of eps / omega_min^2 on every 1 / omega^2, i.e.
 // |d omega_k^2| ~ eps omega_k^4 / omega_min^2 (relative eps (omega_k / omega_min)^2: the low modes to
-// round-off whatever N; omega_min^2 is reported as omega_squared_min).
+// round-off whatever N; omega_min^2 is reported as omega_squared_min). Directions whose 1 / omega^2 is
+// below that backward error (the top of the spectrum, when stiffnesses or inertias lie many decades
+// apart) come out as omega = +inf with a zero shape and a zero component_share column.
 struct StraightRodModes {
   VecX frequencies;       // circular frequencies omega_k, ascending (3N)
   MatX shapes;            // 3N x 3N, column k = v_k, M-normalised (v_k^T M v_k = 1)
