@@ -38,8 +38,15 @@ struct Slot {
 // The joint system in (phi_1, .., phi_K, u): Pi = sum_k Pi_arm_k(phi_k, l_k(u)) + pull * u.
 class JointSystem {
  public:
-  JointSystem(std::vector<Slot> slots, double pull, std::size_t elements)
-      : slots_(std::move(slots)), pull_(pull), n_(static_cast<Eigen::Index>(elements)) {}
+  // The gradient is measured in the problem's own units (B and the rod length L): its angle rows are
+  // moments, scaled by B / L, its length row a force, scaled by B / L^2, so that one tolerance means
+  // the same at any B and L (an absolute one failed at P = 1e6 and was empty at P = 1e-6).
+  JointSystem(std::vector<Slot> slots, double pull, std::size_t elements, double bending_stiffness, double rod_length)
+      : slots_(std::move(slots)),
+        pull_(pull),
+        n_(static_cast<Eigen::Index>(elements)),
+        moment_unit_(bending_stiffness / rod_length),
+        force_unit_(bending_stiffness / (rod_length * rod_length)) {}
 
   void set_pull(double pull) { pull_ = pull; }
   Eigen::Index angles() const { return n_ * static_cast<Eigen::Index>(slots_.size()); }
@@ -66,11 +73,12 @@ class JointSystem {
     return e;
   }
   // ||gradient||: with the length row (joint) or without it (shape only, u fixed).
-  static double norm2(const Eval& e, bool joint) {
-    return std::sqrt(e.grad_phi.squaredNorm() + (joint ? e.grad_u * e.grad_u : 0.0));
+  double norm2(const Eval& e, bool joint) const {
+    const double g_u = joint ? e.grad_u / force_unit_ : 0.0;
+    return std::sqrt(e.grad_phi.squaredNorm() / (moment_unit_ * moment_unit_) + g_u * g_u);
   }
-  static double norm_inf(const Eval& e, bool joint) {
-    return std::max(e.grad_phi.lpNorm<Eigen::Infinity>(), joint ? std::abs(e.grad_u) : 0.0);
+  double norm_inf(const Eval& e, bool joint) const {
+    return std::max(e.grad_phi.lpNorm<Eigen::Infinity>() / moment_unit_, joint ? std::abs(e.grad_u) / force_unit_ : 0.0);
   }
 
   // Newton step: bordered solve of [A b; b^T c] (dphi, du) = -(g_phi, g_u). Returns false if the
@@ -114,6 +122,7 @@ class JointSystem {
   std::vector<Slot> slots_;
   double pull_;
   Eigen::Index n_;
+  double moment_unit_, force_unit_;
   BandedLU lu_;
 };
 
@@ -129,7 +138,7 @@ struct NewtonResult {
 void newton(JointSystem& system, NewtonResult& state, bool joint, const SleeveSolverOptions& options) {
   for (std::size_t it = 0;; ++it) {
     JointSystem::Eval e = system.evaluate(state.phi, state.u);
-    const double r = JointSystem::norm_inf(e, joint);
+    const double r = system.norm_inf(e, joint);
     state.residual = r;
     check_time_budget("elastica2d sleeve Newton", state.iterations, r);
     if (!std::isfinite(r))
@@ -138,7 +147,7 @@ void newton(JointSystem& system, NewtonResult& state, bool joint, const SleeveSo
     if (it == options.max_iterations)
       throw SolverError(kMethod,
                         "Newton did not converge in " + std::to_string(options.max_iterations) +
-                            " iterations (||grad Pi||_inf = " + format_value(r) + " > tolerance " +
+                            " iterations (scaled ||grad Pi||_inf = " + format_value(r) + " > tolerance " +
                             format_value(options.tolerance) + ")",
                         state.iterations, r);
     VectorXd dphi;
@@ -153,11 +162,11 @@ void newton(JointSystem& system, NewtonResult& state, bool joint, const SleeveSo
     if (std::max(dphi.lpNorm<Eigen::Infinity>(), std::abs(du)) <= 64.0 * kEps * (1.0 + size)) {
       state.phi += dphi;  // already at round-off
       state.u += du;
-      state.residual = JointSystem::norm_inf(system.evaluate(state.phi, state.u), joint);
+      state.residual = system.norm_inf(system.evaluate(state.phi, state.u), joint);
       return;
     }
     // Backtracking on ||grad Pi||_2; a trial may not shrink any arm by more than 3/4.
-    const double merit = JointSystem::norm2(e, joint);
+    const double merit = system.norm2(e, joint);
     double alpha = 1.0;
     for (;;) {
       const double u = state.u + alpha * du;
@@ -166,7 +175,7 @@ void newton(JointSystem& system, NewtonResult& state, bool joint, const SleeveSo
         feasible = feasible && system.length(k, u) > 0.25 * system.length(k, state.u);
       if (feasible) {
         const VectorXd phi = state.phi + alpha * dphi;
-        const double m = JointSystem::norm2(system.evaluate(phi, u), joint);
+        const double m = system.norm2(system.evaluate(phi, u), joint);
         if (std::isfinite(m) && m <= (1.0 - kArmijo * alpha) * merit) {
           state.phi = phi;
           state.u = u;
@@ -260,7 +269,7 @@ SleeveSolution solve_sleeve(const SleeveProblem& problem, const SleeveSolverOpti
   slot.arm.exit_angle = 0.0;
   slot.arm.tip_force = Vector2d(0.0, -problem.tip_load);
   slot.arm.elements = options.elements;
-  JointSystem system({slot}, problem.pull, options.elements);
+  JointSystem system({slot}, problem.pull, options.elements, problem.bending_stiffness, problem.rod_length);
   NewtonResult r;
   try {
     r = solve_joint(system, l0, options);
@@ -323,7 +332,7 @@ ArmScaleSolution solve_arm_scale(const ArmScaleProblem& problem, const SleeveSol
   s2.arm.tip_force = Vector2d(0.0, -problem.weight2);
   s2.base = available;
   s2.sign = -1.0;
-  JointSystem system({s1, s2}, 0.0, options.elements);
+  JointSystem system({s1, s2}, 0.0, options.elements, problem.bending_stiffness, problem.rod_length);
   const NewtonResult r = solve_joint(system, u0, options);
 
   ArmScaleSolution sol;

@@ -395,3 +395,39 @@ TEST(SleeveSolverInput, RodLeavingTheSleeveIsASolverError) {
 }
 
 }  // namespace
+
+namespace {
+
+// The Newton tolerance is in the problem's own units (angle rows / (B/L), the length row / (B/L^2)):
+// the same problem stated in other units (lengths x lambda, forces x mu, so B x mu lambda^2) converges
+// in the same iterations to the same dimensionless equilibrium. With the former absolute tolerance,
+// forces of 1e6 could not reach 1e-11 (round-off eps x 1e6) and forces of 1e-6 met it at once.
+TEST(SleeveSolver, ToleranceIsInTheProblemsOwnUnits) {
+  const e2d::SleeveProblem unit = alpha2_sleeve();
+  const e2d::SleeveSolution reference = e2d::solve_sleeve(unit, with_elements(64));
+  for (const auto& [lambda, mu] : {std::pair{1e3, 1e6}, std::pair{1e-3, 1e-6}, std::pair{1e-2, 1e8}}) {
+    e2d::SleeveProblem scaled = unit;
+    scaled.bending_stiffness *= mu * lambda * lambda;
+    scaled.tip_load *= mu;
+    scaled.pull *= mu;
+    scaled.rod_length *= lambda;
+    const e2d::SleeveSolution s = e2d::solve_sleeve(scaled, with_elements(64));
+    EXPECT_EQ(s.iterations, reference.iterations) << lambda << " " << mu;
+    EXPECT_TRUE(is_close(s.arm.free_length / lambda, reference.arm.free_length, 1e-12, 0.0)) << lambda << " " << mu;
+    EXPECT_LE(s.residual, kTolerance);
+    EXPECT_LE(std::abs(s.axial_force_inside - scaled.pull),
+              kTolerance * scaled.bending_stiffness / (scaled.rod_length * scaled.rod_length));
+  }
+  e2d::ArmScaleProblem arms = inclined_scale();
+  const e2d::ArmScaleSolution arms_reference = e2d::solve_arm_scale(arms, with_elements(64));
+  arms.bending_stiffness *= 1e6 * 1e2 * 1e2;
+  arms.weight1 *= 1e6;
+  arms.weight2 *= 1e6;
+  arms.rod_length *= 1e2;
+  arms.sleeve_length *= 1e2;
+  const e2d::ArmScaleSolution s = e2d::solve_arm_scale(arms, with_elements(64));
+  EXPECT_EQ(s.iterations, arms_reference.iterations);
+  EXPECT_TRUE(is_close(s.arm1.free_length / 1e2, arms_reference.arm1.free_length, 1e-12, 0.0));
+}
+
+}  // namespace

@@ -71,7 +71,8 @@ struct ArmScaleProblem {
 
 struct SleeveSolverOptions {
   std::size_t elements = 64;        // N per arm, >= 2
-  double tolerance = 1e-11;         // on ||grad Pi||_inf (problem units), in (0, 1)
+  double tolerance = 1e-11;         // on ||grad Pi||_inf in the problem's own units (angle rows / (B/L),
+                                    // the length row / (B/L^2)), in (0, 1)
   std::size_t max_iterations = 100;  // Newton iterations, >= 1
   // Starting free length (sleeve: l; arm scale: l1). Default: sleeve sqrt(2 B S) / P (the
   // small-deflection balance S = (P l)^2 / (2B) would give it, used only as a start);
@@ -99,7 +100,7 @@ struct SleeveSolution {
   double tip_angle_below = 0.0;     // phi_tip = -theta_tip (PHYSICS.md §6.1 table)
   double length_stiffness = 0.0;    // sigma = d2Pi*/dl2 at the solution
   std::size_t iterations = 0;
-  double residual = 0.0;            // final ||grad Pi||_inf
+  double residual = 0.0;            // final scaled ||grad Pi||_inf (SleeveSolverOptions::tolerance)
 };
 
 struct ArmScaleSolution {
