@@ -78,7 +78,8 @@ class JointSystem {
     return std::sqrt(e.grad_phi.squaredNorm() / (moment_unit_ * moment_unit_) + g_u * g_u);
   }
   double norm_inf(const Eval& e, bool joint) const {
-    return std::max(e.grad_phi.lpNorm<Eigen::Infinity>() / moment_unit_, joint ? std::abs(e.grad_u) / force_unit_ : 0.0);
+    return std::max(e.grad_phi.lpNorm<Eigen::Infinity>() / moment_unit_,
+                    joint ? std::abs(e.grad_u) / force_unit_ : 0.0);
   }
 
   // Newton step: bordered solve of [A b; b^T c] (dphi, du) = -(g_phi, g_u). Returns false if the

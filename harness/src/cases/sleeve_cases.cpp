@@ -99,10 +99,10 @@ void add_sleeve(LevelOutput& out, double ax, double ay, double bx, double by, do
 
 // ---- sleeve/eshelby -----------------------------------------------------------------------------
 
-// The pull S is in (0, P) (sin(phi_tip) = S/P < 1), and at most what the levels resolve: the free length
-// in units of sqrt(B/P) depends on S/P alone, and below S/P = 0.03 the finest levels put H_spread at
-// its round-off floor (measured: S/P = 0.0128 passes, 0.0118 gives H_spread order 1.01, R^2 0.82; the
-// limit keeps a factor 2.3). The equilibrium must leave part of the rod in the sleeve: l < rod_length
+// The pull S is in (0, P) (sin(phi_tip) = S/P < 1), and not below what the levels resolve: at small S/P
+// the finest levels put H_spread at its round-off floor (measured along S at P = 2: S/P = 0.0128 passes,
+// 0.0118 gives the H spread order 1.01, R^2 0.82; along P at S = 1.41: 0.0034 passes, 0.0025 gives 1.89).
+// S/P >= 0.03 keeps a factor 2.3 from the first failure. The equilibrium must leave part of the rod in the sleeve: l < rod_length
 // (at B = 12, or rod_length = 0.95, the free length 3.48 and 1.0 exceeded the rod and every level failed
 // with "the rod leaves the sleeve").
 constexpr double kEshelbyMinPullRatio = 0.03;
@@ -198,7 +198,8 @@ Case eshelby_case() {
       invariant_metric("eshelby_identity", "N_in - N_out - M_e^2/(2B) (N_in from the equilibrium in l)", 2.0),
       invariant_metric("H_continuity", "H inside (= N_in) - mean of H along the arm", 2.0),
       invariant_metric("H_spread", "max |H(s) - mean| / natural scale along the arm", 2.0),
-      invariant_metric("N_in_vs_S", "(N_in - S) / (B/L^2), N_in = -dPi_arm/dl: the length row of the gradient in its unit", std::nullopt),
+      invariant_metric("N_in_vs_S", "(N_in - S) / (B/L^2), N_in = -dPi_arm/dl: the length row of the gradient",
+                       std::nullopt),
       diagnostic("tension_jump", "N_in - N_out at the exit"),
       diagnostic("length_stiffness", "d2Pi*/dl2 (< 0: unstable under the dead pull)"),
       diagnostic("newton_iterations", "Newton iterations")};
@@ -241,8 +242,8 @@ void check_arm_scale_parameters(const Parameters& p) {
   if (load > kArmScaleMaxLoad)
     throw InputError(P1 >= P2 ? "P1" : "P2",
                      fmt::format("invalid parameters: max(P1, P2) L^2 / B = {} exceeds {}, the load the levels "
-                                 "resolve (beyond it the solver may settle on another equilibrium branch or fail); lower P1, P2 or "
-                                 "L, or raise B",
+                                 "resolve (beyond it the solver may settle on another equilibrium branch or fail); "
+                                 "lower P1, P2 or L, or raise B",
                                  format_value(load), kArmScaleMaxLoad));
   if (std::abs(alpha) < kArmScaleMinAngle)
     throw InputError("alpha", fmt::format("invalid parameter 'alpha' = {}: |alpha| must be >= {} (a level sleeve makes "

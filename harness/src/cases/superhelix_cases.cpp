@@ -400,7 +400,7 @@ constexpr std::size_t kBendingModes = 3, kTwistModes = 2;
 // torsional mode, relative (k ell)^2 / 24 = 2.5e-5 at N = 64) for the orders to mean anything: at most
 // 1 % of it. Closed forms give omega_min (the lowest of the three families) and the highest mode the
 // case classifies (the third bending mode of the stiffer plane or the second torsional mode). Defaults:
-// 1.3e-13. GJ, EI1 or EI2 = 1e12 or rhoS = 1e12 put it at 1e-3 .. 1e2 (before: twist orders 1.8, or
+// 1.2e-13. GJ, EI1, EI2, rhoS or rhoI0 = 1e12 put it at 3e-3 .. 1.4 (before: twist orders 1.8, or
 // every level failed on a mode lost to round-off).
 constexpr double kMaxModeRoundOff = 2.5e-7;
 void check_mode_spread(const Parameters& p) {
@@ -414,10 +414,11 @@ void check_mode_spread(const Parameters& p) {
   const double round_off = kEps * (high / low) * (high / low);
   if (!(round_off <= kMaxModeRoundOff))
     throw InputError(twist_high >= bending_high ? "GJ" : (EI1 >= EI2 ? "EI1" : "EI2"),
-                     fmt::format("invalid parameters: the modes the case measures spread over (omega_high / omega_min)^2 "
-                                 "= {} (omega_high from {}, omega_min from {}), so the eigensolver's round-off on them, "
-                                 "eps x that = {}, exceeds {} (1 % of the finest level's smallest discretisation "
-                                 "error); bring EI1, EI2, GJ, rhoS, rhoI0 and L closer to each other's scales",
+                     fmt::format("invalid parameters: the modes the case measures spread over (omega_high / "
+                                 "omega_min)^2 = {} (omega_high from {}, omega_min from {}), so the eigensolver's "
+                                 "round-off on them, eps x that = {}, exceeds {} (1 % of the finest level's smallest "
+                                 "discretisation error); bring EI1, EI2, GJ, rhoS, rhoI0 and L closer to each other's "
+                                 "scales",
                                  format_value((high / low) * (high / low)),
                                  twist_high >= bending_high ? "torsion (GJ / rhoI0)" : "bending (EI / rhoS)",
                                  twist_low <= bending_low ? "torsion" : "bending", format_value(round_off),
