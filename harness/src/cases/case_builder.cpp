@@ -57,6 +57,12 @@ GateSpec measured_bound(const std::string& metric, double at_finest, double h_fi
   return gate;
 }
 
+GateSpec measured_order_gate(const std::string& metric, double order, std::string rationale) {
+  GateSpec gate = order_gate(metric, order, std::move(rationale));
+  gate.measured = true;
+  return gate;
+}
+
 Case make_case(std::string family, CaseText text, Parameters parameters, Resolution resolution,
                std::vector<MetricSpec> metrics, std::vector<GateSpec> gates, LevelRunner runner) {
   Case c;

@@ -35,6 +35,9 @@ std::size_t element_count(double level);
 // value <= C h^order with C = 2 x the value measured at the finest default level (h_finest): a
 // regression of the error constant by more than 2x turns red; skipped at non-default parameters.
 GateSpec measured_bound(const std::string& metric, double at_finest, double h_finest, double order);
+// An order seen at the default parameters but not derived (a superconvergence): checked there,
+// skipped elsewhere like a measured bound.
+GateSpec measured_order_gate(const std::string& metric, double order, std::string rationale);
 
 // The load a case's levels resolve, P length^2 / EI in [low, high] (a window measured per case, with
 // the reason beyond its ends in `why`); InputError naming P otherwise. `length` names the parameter

@@ -1,15 +1,21 @@
 // rod3d/helix-axial-wrench: the uniform helix held by an axial wrench (Love 1944 §§270-271;
 // PHYSICS.md §7.1) on the nodal 3-D rod: clamped at s = 0 in the helix's material frame, loaded at
 // the tip by the dead force n(L) and moment m(L) of the closed form, natural twist u_hat0 so that
-// the twisting moment is M_t. Newton starts from a helix of 5 % smaller radius and pitch angle, so
-// the case checks that the discrete equilibrium converges to THE helix, not that it stays put.
+// the twisting moment is M_t. Newton starts from a helix of 1 % smaller radius and pitch angle (divided
+// by the turns beyond one), so the case checks that the discrete equilibrium converges to THE helix,
+// not that it stays put.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
 
 #include "../case_builder.hpp"
 #include "rod3d_cases.hpp"
 #include "rod3d_support.hpp"
 #include "rodvv/references/rod3d.hpp"
+#include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
 #include "rodvv/harness/trajectory_metrics.hpp"
 #include "rodvv/solvers/rod3d/solution.hpp"
 #include "rodvv/solvers/rod3d/statics.hpp"
@@ -38,16 +44,31 @@ LevelOutput run(const Parameters& p, double level) {
   model.root.frame = root.frame;
   model.end_force = tip.force;    // the axial wrench as a dead tip force ...
   model.end_moment = tip.moment;  // ... and the moment m(L) it carries
+  const double turns = L * std::sin(helix.pitch_angle) / (2.0 * std::numbers::pi * helix.radius);
+  const double offset = 0.01 / std::max(1.0, turns);
   ref::AxialWrenchHelix start = helix;
-  start.radius *= 0.95;
-  start.pitch_angle *= 0.95;
+  start.radius *= 1.0 - offset;
+  start.pitch_angle *= 1.0 - offset;
   const auto initial = state_on_curve(model, [&](double s) {
     const auto point = ref::axial_wrench_helix_point(start, s);
     return CurvePoint{point.position, point.frame};
   });
+  // Newton with its line search from the start; where that fails (measured at M_t >= 1 and the other
+  // defaults, a residual stuck near 1), pseudo-transient continuation from the same start, whose first
+  // steps are damped (tau = 1e3) - alone it leaves helices of more than ~1.3 turns (L = 12), which
+  // Newton reaches. Either converges to THE helix or the shape gates say it did not.
   rod::StaticOptions options;
   options.tolerance = 1e-12;
-  const auto result = rod::solve_static(model, initial, options);
+  const auto result = [&] {
+    try {
+      return rod::solve_static(model, initial, options);
+    } catch (const SolverError&) {
+      options.pseudo_transient = true;
+      options.initial_pseudo_time = 1e3;
+      options.max_iterations = 400;
+      return rod::solve_static(model, initial, options);
+    }
+  }();
   const SpatialRodSolution solution = rod::make_solution(model, result.state);
 
   double shape = 0.0, frame = 0.0, strain = 0.0;
@@ -78,23 +99,57 @@ LevelOutput run(const Parameters& p, double level) {
   return output;
 }
 
+// The helix is posed in units of its radius (R and L scaled alike by 1e-2 or 10 pass), so three
+// numbers shape it, each measured over a grid of the others' defaults (2026-11-26, levels 32 .. 128):
+// - turns L sin(a) / (2 pi R) in [0.015, 1.5]: at 0.013 (L = 0.1) the errors of the finest levels
+//   reach Newton's tolerance floor; at 1.8 (L = 14) and beyond neither Newton nor the pseudo-transient
+//   fallback reaches the helix from the 1 % start at 32 edges;
+// - the twisting moment M_t R / B in [-4.5, 5]: at -5.4 (M_t = -10) the frame order is 1.89, still
+//   pre-asymptotic on these levels (1.84, 1.94, 1.98 pairwise up to N = 256); at 5.4 (M_t = 10) both
+//   solves fail with levels finer than these;
+// - C / B in [0.03, 100]: at 0.007 (C = 0.009) an order leaves its window, at B = 1e12 or C = 1e12 all
+//   levels fail.
+void check_helix_parameters(const Parameters& p) {
+  const double B = parameter_value(p, "B"), C = parameter_value(p, "C"), R = parameter_value(p, "radius");
+  const double L = parameter_value(p, "L"), a = parameter_value(p, "pitch_angle");
+  const double turns = L * std::sin(a) / (2.0 * std::numbers::pi * R);
+  const double moment = parameter_value(p, "twisting_moment") * R / B;
+  if (!(turns >= 0.015 && turns <= 1.5))
+    throw InputError("L", fmt::format("invalid parameters: the helix makes L sin(pitch_angle) / (2 pi radius) = {} "
+                                      "turns; the levels resolve [0.015, 1.5]",
+                                      format_value(turns)));
+  if (!(moment >= -4.5 && moment <= 5.0))
+    throw InputError("twisting_moment",
+                     fmt::format("invalid parameters: twisting_moment x radius / B = {} must be in [-4.5, 5], where "
+                                 "the levels resolve the helix",
+                                 format_value(moment)));
+  if (!(C / B >= 0.03 && C / B <= 100.0))
+    throw InputError("C", fmt::format("invalid parameters: C / B = {} must be in [0.03, 100]", format_value(C / B)));
+}
+
 }  // namespace
 
 void add_helix_axial_wrench(Registry& registry) {
-  const double h = 1.0 / 64.0;
+  // Levels 32, 64, 128 (were 16, 32, 64: at 16 edges a helix of more than ~1.3 turns is not in Newton's
+  // reach from a 1 % offset, and the H spread's order 4 was pre-asymptotic off the defaults, 3.82 .. 3.87).
+  // Values measured at N = 128 (2026-11-26).
+  const double h = 1.0 / 128.0;
   std::vector<GateSpec> gates{
       order_gate("shape_max_error", 2.0, "chords of the helix, curvature 2 tan(phi/2)/ebar: O(h^2)"),
       order_gate("frame_max_error", 2.0, "halfway rotation of the edge frames vs the frame at the vertex: O(h^2)"),
       order_gate("strain_max_error", 2.0, "discrete curvature and twist of a uniform helix: O(h^2)"),
       order_gate("H_mean", 2.0, "H at the vertices from O(h^2) strains and edge-averaged forces"),
       // H is uniform along the discrete helix except where the clamp and the tip load end it: its
-      // spread falls at fourth order (measured 3.996 over N = 16 ... 128).
-      order_gate("H_spread", 4.0, "the discrete helix is uniform away from its ends: H spread O(h^4) (measured)"),
-      measured_bound("shape_max_error", 1.7532e-4, h, 2.0),
-      measured_bound("frame_max_error", 4.0192e-4, h, 2.0),
-      measured_bound("strain_max_error", 2.7594e-4, h, 2.0),
-      measured_bound("H_mean", 7.4473e-5, h, 2.0),
-      measured_bound("H_spread", 7.7242e-9, h, 4.0),
+      // spread falls at fourth order at the defaults (measured 3.996 over N = 16 ... 128), a
+      // superconvergence not derived: off the defaults the same levels give 3.5 .. 3.9, or reach the
+      // round-off floor (radius 1.5: 1.63), so the order is a measured gate like the bounds.
+      measured_order_gate("H_spread", 4.0, "the discrete helix is uniform away from its ends: H spread O(h^4) "
+                                           "(measured at the defaults)"),
+      measured_bound("shape_max_error", 4.3436e-5, h, 2.0),
+      measured_bound("frame_max_error", 1.0198e-4, h, 2.0),
+      measured_bound("strain_max_error", 6.8394e-5, h, 2.0),
+      measured_bound("H_mean", 1.8464e-5, h, 2.0),
+      measured_bound("H_spread", 4.8383e-10, h, 4.0),
       upper_bound_gate("H_form_difference", 1e-12, GateScope::AllLevels,
                        "compact and flattened H agree to round-off when m = R K (u - u_hat)")};
   std::vector<MetricSpec> metrics{
@@ -103,7 +158,7 @@ void add_helix_axial_wrench(Registry& registry) {
       error_metric("strain_max_error", "", "max |u_i - (tau, kappa, 0)| / sqrt(kappa^2 + tau^2)", 2.0),
       diagnostic_metric("newton_iterations", "Newton iterations")};
   for (auto& m : noether3d_metric_specs(true, 4.0, 2.0)) metrics.push_back(m);
-  registry.add(make_case(
+  Case c = make_case(
       "rod3d",
       {"rod3d/helix-axial-wrench", "Uniform helix held by an axial wrench on the nodal 3-D rod",
        "Kirchhoff rod (bending B both axes, twisting C != B) clamped in the helix frame at s = 0, loaded at s = L by "
@@ -117,8 +172,10 @@ void add_helix_axial_wrench(Registry& registry) {
        make_parameter("pitch_angle", 0.6, 0.1, 1.4, false, false, "rad", "angle between tangent and axis"),
        make_parameter("twisting_moment", 0.37, -10.0, 10.0, false, false, "force length", "M_t = m.t"),
        make_parameter("L", 3.1, 0.0, 1e3, true, false, "length", "rod length")},
-      element_levels("number of edges", {16, 32, 64}, {16, 32, 64, 128}), std::move(metrics),
-      std::move(gates), run));
+      element_levels("number of edges", {32, 64, 128}, {32, 64, 128, 256}), std::move(metrics),
+      std::move(gates), run);
+  c.check_parameters = check_helix_parameters;
+  registry.add(std::move(c));
 }
 
 }  // namespace rodvv::harness::rod3d_cases
