@@ -25,6 +25,7 @@
 
 #include "case_builder.hpp"
 #include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
 #include "rodvv/harness/registry.hpp"
 #include "rodvv/harness/trajectory_metrics.hpp"
 #include "rodvv/invariants/planar_noether.hpp"
@@ -122,13 +123,16 @@ LevelOutput run_tension_level(e2d::Scheme scheme, const Parameters& parameters, 
   LevelOutput output;
   const double error = std::hypot(solution.x.back() - stretched * std::cos(angle),
                                   solution.y.back() - stretched * std::sin(angle));
+  // Sized by the larger of L and the stretched length and by the larger of |F| and EI / L^2 = 1 (the
+  // residual's force scale):
+  // the round-off of a sum of N chords, and of a force balance, follow them (the gates are relative).
   output.metrics["end_displacement"] = {std::hypot(solution.x.back(), solution.y.back()) - L,
-                                        stretched - L, error};
+                                        stretched - L, error, std::max(L, stretched)};
   double force_error = 0.0;
   for (std::size_t e = 0; e < solution.edge_axial_force.size(); ++e)
     force_error = std::max({force_error, std::abs(solution.edge_axial_force[e] - F),
                             std::abs(solution.edge_shear_force[e])});
-  output.metrics["edge_force_error"] = {force_error, 0.0, force_error, F};
+  output.metrics["edge_force_error"] = {force_error, 0.0, force_error, std::max(std::abs(F), 1.0)};
   add_noether(output, solution);
   std::vector<double> stretch(solution.s.size());
   for (std::size_t i = 0; i < stretch.size(); ++i) stretch[i] = solution.axial_force[i] / EA;
@@ -147,9 +151,14 @@ Case tension_case(e2d::Scheme scheme) {
   c.info.parameters = {make_parameter("F", 2.0, -1e6, 1e6, true, true, "force", "axial end force (> 0 tension)"),
                        stiffness("EA", 25.0, "axial stiffness"), stiffness("GA", 3.0, "shear stiffness"),
                        make_parameter("angle", 0.4, -kPi, kPi, false, false, "rad", "clamp angle (L = 1)")};
+  // A stretch 1 + F/EA in (0, 2001]: at F/EA = 4e4 the arcs' Newton fails (line search at load factor
+  // 0.98); 2000 passes on both schemes (measured 2026-11-26).
   c.check_parameters = [](const Parameters& p) {
-    if (!(parameter_value(p, "F") > -parameter_value(p, "EA")))
-      throw InputError("F", "invalid parameter 'F': must be > -EA (stretch 1 + F/EA > 0)");
+    const double F = parameter_value(p, "F"), EA = parameter_value(p, "EA");
+    if (!(F > -EA)) throw InputError("F", "invalid parameter 'F': must be > -EA (stretch 1 + F/EA > 0)");
+    if (!(F <= 2000.0 * EA))
+      throw InputError("F", "invalid parameter 'F' = " + format_value(F) + ": F / EA = " + format_value(F / EA) +
+                                " must be <= 2000 (a stretch of at most 2001, where the levels converge)");
   };
   c.info.resolution = {"N", "number of elements", ResolutionScale::Count, {4, 16, 64, 256}, {4, 16, 64, 256, 1024, 4096}};
   c.info.metrics = {
@@ -157,11 +166,18 @@ Case tension_case(e2d::Scheme scheme) {
       error_metric("edge_force_error", "force", "max over edges of |n.t - F| and |n.N|", std::nullopt),
       spread_metric(std::nullopt)};
   // Round-off: r(L) sums N chords of ~eps error each; 64 N eps (L + FL/EA) at N = 4096 is 1e-10;
-  // at the default N <= 256, 64 * 256 * eps * 1.08 = 3.9e-12 -> 1e-11 for every level.
-  c.gates = {upper_bound_gate("end_displacement", 1e-11, GateScope::AllLevels,
-                              "exact for any N: round-off only (64 N eps L, N <= 256)"),
-             upper_bound_gate("edge_force_error", 1e-12, GateScope::AllLevels,
-                              "the force balance is exact: Newton tolerance 1e-13 x 10"),
+  // at the default N <= 256, 64 * 256 * eps = 3.6e-12 of max(L, stretched length) -> 1e-11 for every level.
+  // Both gates relative (to max(L, stretched length); to max(|F|, EI/L^2)): absolute ones failed at
+  // F = 1e6 (end 1.2e-11, forces 1.2e-10 = eps F) and at F = 1e4 on the arcs.
+  GateSpec end = upper_bound_gate("end_displacement", 1e-11, GateScope::AllLevels,
+                                  "exact for any N: round-off only (64 N eps of max(L, stretched length), N <= 256)");
+  end.relative = true;
+  end.name = "end_displacement <= 1e-11 x max(L, stretched length) at every level";
+  GateSpec force = upper_bound_gate("edge_force_error", 1e-12, GateScope::AllLevels,
+                                    "the force balance is exact: Newton tolerance 1e-13 x 10, of max(|F|, EI/L^2)");
+  force.relative = true;
+  force.name = "edge_force_error <= 1e-12 x max(|F|, EI/L^2) at every level";
+  c.gates = {end, force,
              upper_bound_gate("H_spread", 1e-13, GateScope::AllLevels,
                               "H = F + F^2/(2EA) at every node: round-off (~100 eps)")};
   c.run_level = [scheme](const Parameters& p, double level) { return run_tension_level(scheme, p, level); };
@@ -394,20 +410,18 @@ Case critical_case(e2d::Scheme scheme) {
       "EA = inf; references/reissner.hpp)";
   c.info.parameters = {stiffness("EA", 50.0, "axial stiffness (L = EI = 1)"),
                        stiffness("GA", 20.0, "shear stiffness")};
+  // GA <= EA: the first-mode branch then leaves the straight column upwards in P (supercritical), which
+  // the intercept of theta0^2 from two loads just above the critical one needs (measured, both schemes:
+  // GA = EA passes at EA = 15 .. 1e12; at EA = 50, GA = 85 and 100 .. 1e12 there is no post-buckled
+  // branch above the critical load; EA = 20, GA = 30 fails alike). It also keeps the bifurcation of
+  // the reference, 1 + 4 P_1 (1/GA - 1/EA) >= 1 > 0.
   c.check_parameters = [](const Parameters& p) {
-    // The reference names its arguments (axial_stiffness, shear_stiffness); the user set EA and GA.
-    try {
-      ref::reissner_pinned_critical_load(1.0, 1.0, parameter_value(p, "EA"), parameter_value(p, "GA"));
-    } catch (const InputError& error) {
-      const std::string name = error.parameter() == "axial_stiffness" ? "EA"
-                               : error.parameter() == "shear_stiffness" ? "GA"
-                                                                        : error.parameter();
-      std::string message = error.what();
-      for (const auto& [from, to] : {std::pair<std::string, std::string>{"'axial_stiffness'", "'EA'"},
-                                     std::pair<std::string, std::string>{"'shear_stiffness'", "'GA'"}})
-        if (const auto at = message.find(from); at != std::string::npos) message.replace(at, from.size(), to);
-      throw InputError(name, message);
-    }
+    const double EA = parameter_value(p, "EA"), GA = parameter_value(p, "GA");
+    if (!(GA <= EA))
+      throw InputError("GA", "invalid parameters: the shear stiffness GA = " + format_value(GA) +
+                                 " must be <= the axial stiffness EA = " + format_value(EA) +
+                                 " (a stiffer shear than axial response can make the pitchfork subcritical, with no "
+                                 "post-buckled branch above the critical load for the case to extrapolate from)");
   };
   c.info.resolution = {"N", "number of elements", ResolutionScale::Count, {16, 32, 64, 128},
                        {16, 32, 64, 128, 256, 512}};
