@@ -570,10 +570,11 @@ LevelOutput run_modes(const Parameters& p, double level) {
 // three components (twist, kappa1, kappa2): it swings and twists out of plane. L = 0.7, rho S = 0.3.
 // J_scale multiplies the rotational inertia (0: the translational-only Super-Helix, whose twist is
 // nearly massless: it gains energy at some steps, test FreeMotionWithoutRotationalInertiaGainsEnergy).
+constexpr double kEnergyRodLength = 0.7;
 sh::RodModel energy_model(const Parameters& p) {
   sh::RodModel model;
   model.elements = element_count(parameter_value(p, "N"));
-  model.length = 0.7;
+  model.length = kEnergyRodLength;
   model.line_density = 0.3;
   model.stiffness = Vec3(0.03, 0.05, 0.08);
   model.rotational_inertia = parameter_value(p, "J_scale") * sh::elliptic_section_inertia(model.line_density, 0.1, 0.06);
@@ -828,8 +829,11 @@ void register_superhelix_cases(Registry& registry) {
         "(tangent yawed by 30 deg, cross-section rolled by 40 deg, GJ = 0.8 EI) under a vertical dead tip load P.",
         "sqrt(alpha) = K(k) - F(psi0, k); tip displacements by incomplete elliptic integrals (planar reference)",
         "Bisshopp & Drucker 1945; Mattiasson 1981, IJNME 17:145-153; Casati & Bertails-Descoubes 2013; PHYSICS.md §3.5",
+        // The loads its coarse levels (N = 2 .. 8: the clothoid statics is a finite-difference Newton, issue
+        // 17) fit order 4 at: alpha in [0.1, 3.5] (measured 2026-11-26: 0.07 gives tip_w 3.71, 4 and above
+        // tip_u 4.7 .. 7.8, pre-asymptotic).
         {unit_length_parameter(), stiffness_parameter(),
-         make_parameter("alpha", 2.0, 0.0, 20.0, true, false, "", "load parameter P L^2 / EI")},
+         make_parameter("alpha", 2.0, 0.1, 3.5, false, false, "", "load parameter P L^2 / EI")},
         elements(levels, {2, 4, 8, 16, 32}),
         {error_metric("tip_w", "L", "vertical tip deflection / L", 4.0, true),
          error_metric("tip_u", "L", "horizontal tip displacement along the clamp tangent / L", 4.0, true),
@@ -856,8 +860,9 @@ void register_superhelix_cases(Registry& registry) {
         "under gravity rho S g L^3/EI = weight: the Lagrangian has no explicit s, so H is conserved.",
         "H = n.v + m.u - W - V constant along s (V = -rho S g.r), compact and flattened forms equal",
         "Maddocks & Dichmann 1994, J. Elasticity 34:83; PHYSICS.md §1.1; seed slides 002",
+        // weight up to 40: at 50 the H spread's order is 1.89 on the default levels (measured 2026-11-26).
         {unit_length_parameter(), stiffness_parameter(),
-         make_parameter("weight", 3.0, 0.0, 50.0, true, false, "", "rho S g L^3 / EI")},
+         make_parameter("weight", 3.0, 0.0, 40.0, true, false, "", "rho S g L^3 / EI")},
         elements(levels, {8, 16, 32, 64, 128}),
         [] {
           auto specs = noether3d_metric_specs(false, 2.0);
@@ -894,8 +899,10 @@ void register_superhelix_cases(Registry& registry) {
         "Super-Helix at N = 128, 256, 512 extrapolated (h^2, h^4), error ~1e-12 (weight = 3; otherwise N = 32, 64, "
         "one h^2 step, ~3e-9)",
         "Maddocks & Dichmann 1994, J. Elasticity 34:83; Casati & Bertails-Descoubes 2013; PHYSICS.md §1.1, §1.4",
+        // The weights its coarse levels (N = 2 .. 8, issue 17) fit the H spread's order 2 at: [2, 6]
+        // (measured 2026-11-26: 1.5 and below 1.64 .. 1.04, 7 and above 2.54, pre-asymptotic).
         {unit_length_parameter(), stiffness_parameter(),
-         make_parameter("weight", 3.0, 0.0, 50.0, true, false, "", "rho S g L^3 / EI")},
+         make_parameter("weight", 3.0, 2.0, 6.0, false, false, "", "rho S g L^3 / EI")},
         elements(levels, {2, 4, 8, 16, 32}),
         {invariant_metric("H_spread", "max |H(s) - mean H| / term scale at the N + 1 nodes", 2.0),
          invariant_metric("H_spread_gauss", "the same at the 2 Gauss points per element (asymptotically O(h^3))"),
@@ -1007,8 +1014,17 @@ void register_superhelix_cases(Registry& registry) {
     std::vector<GateSpec> gates{
         order_gate("energy_loss", 1.0, "semi-implicit Euler dissipates at first order in h (ALGORITHMS.md §1.5)"),
         measured_bound("energy_loss", kEnergyLossAtFinest, levels.back(), 1.0),
-        upper_bound_gate("max_energy_increase", 1e-13, GateScope::AllLevels,
-                         "monotone decay: any increase is round-off of E (~64 eps |E| summed terms)"),
+        // Monotone decay is what the default release shows (max_energy_increase = 0), not a property of
+        // the scheme: its velocity terms (gyroscopic torque included) are explicit, and a stronger swing
+        // gains energy at some steps (g = 20: 2e-4 |E|; J_scale = 0: 7e-7), so the gate holds at the
+        // defaults, like a measured bound.
+        [] {
+          GateSpec monotone = upper_bound_gate("max_energy_increase", 1e-13, GateScope::AllLevels,
+                                               "monotone decay at the default release: any increase is round-off "
+                                               "of E (~64 eps |E| summed terms)");
+          monotone.measured = true;
+          return monotone;
+        }(),
         upper_bound_gate("dense_vs_recursive", 1e-12, GateScope::AllLevels,
                          "the O(N) recursion solves the same system as the dense LDL^T (issue gate 1e-12, "
                          "as a relative residual)")};
@@ -1027,7 +1043,10 @@ void register_superhelix_cases(Registry& registry) {
         // for the whole case (N = 256 would take minutes, issue 14).
         {integer_parameter("N", 8.0, 1.0, 128.0, "number of elements"),
          make_parameter("g", 2.0, 0.0, 100.0, true, false, "length/time^2", "gravity"),
-         make_parameter("t_end", 0.25, 0.0, 100.0, true, false, "time", "horizon"),
+         // t_end in [0.01, 1]: the first-order loss is fitted over dt = 2e-3 .. 5e-4; at 0.0025 (one coarse
+         // step) and at 3 or 10 (an O(h^2) part not yet decayed over the longer swing) the order is 0.83 ..
+         // 0.85 (measured 2026-11-26).
+         make_parameter("t_end", 0.25, 0.01, 1.0, false, false, "time", "horizon"),
          make_parameter("J_scale", 1.0, 0.0, 1e3, false, false, "",
                         "factor on the section's rotational inertia (0: translational inertia only)")},
         // pairwise orders of the loss 0.93 .. 0.97 from dt = 4e-3 down to 1.25e-4 (an O(h^2) part
@@ -1041,6 +1060,15 @@ void register_superhelix_cases(Registry& registry) {
          diagnostic_metric("dense_vs_recursive_forward", "max over steps of |dv_dense - dv_recursive|_inf / |dv|_inf"),
          diagnostic_metric("rotational_kinetic_share", "max over steps of T_rotational / T")},
         gates, run_energy);
+    // The swing the levels resolve: t_end sqrt(g / L) <= 3 (L = 0.7; defaults 0.42): at 3.8 (g = 10,
+    // t_end = 1) and 4.8 (g = 100, t_end = 0.4) the loss's order leaves its window; 3 passes at g = 20,
+    // 50, 100 (measured 2026-11-26).
+    c.check_parameters = [](const Parameters& p) {
+      const double swing = parameter_value(p, "t_end") * std::sqrt(parameter_value(p, "g") / kEnergyRodLength);
+      if (!(swing <= 3.0))
+        throw InputError("t_end", "invalid parameters: t_end sqrt(g / L) = " + format_value(swing) +
+                                      " (L = 0.7) must be <= 3, the swing the levels resolve");
+    };
     registry.add(std::move(c));
   }
   {
