@@ -146,6 +146,21 @@ DofKind dof_kind(const DofLayout& layout, std::size_t k) {
   return slot == 3 ? DofKind::Angle : DofKind::Multiplier;
 }
 
+// Per dof: the scale of its residual row (force, moment, length) or of its unknown (length, 1, force).
+VecX unit_scales(const RodModel& model, const Scales& scales, bool unknowns) {
+  const DofLayout layout(model);
+  VecX out(Eigen::Index(layout.size()));
+  for (std::size_t k = 0; k < layout.size(); ++k) {
+    switch (dof_kind(layout, k)) {
+      case DofKind::Position: out[Eigen::Index(k)] = unknowns ? scales.length : scales.force; break;
+      case DofKind::Angle: out[Eigen::Index(k)] = unknowns ? 1.0 : scales.moment; break;
+      case DofKind::Multiplier: out[Eigen::Index(k)] = unknowns ? scales.force : scales.length; break;
+    }
+  }
+  // Rounded to powers of two, so that scaling the system is exact in floating point.
+  return out.unaryExpr([](double x) { return std::exp2(std::round(std::log2(x))); });
+}
+
 double scaled_measure(const RodModel& model, const VecX& r, const Scales& scales, const std::vector<char>& held) {
   const DofLayout layout(model);
   double worst = 0.0;
@@ -280,14 +295,20 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
     }
     // At the round-off floor the residual cannot show further progress, but the iterate may still
     // carry the error of the last step (up to floor / stiffness): one more full Newton step, taken
-    // without the line search, squares that error away.
+    // without the line search, squares that error away (kept if the residual stays at the floor).
     const bool at_floor = outcome.residual <= round_off_floor(model, state, scales.force);
     jacobian.prune([&](Eigen::Index row, Eigen::Index, double) { return !held[std::size_t(row)]; });
+    if (pseudo_transient) add_pseudo_time(model, scales, held, 1.0 / pseudo_time, jacobian);
+    // Solved in the problem's own units: rows over their residual scale (forces, moments, lengths),
+    // columns times their unknown's (L for positions, 1 for angles, the force scale for multipliers),
+    // so that the LU's pivoting sees entries of order one at any EI and L (unscaled, EI = 1e9 or
+    // L = 1e-3 failed on the Mattiasson cantilever). A held dof's row is then the identity.
+    const VecX row_scale = unit_scales(model, scales, false), column_scale = unit_scales(model, scales, true);
+    jacobian = row_scale.cwiseInverse().asDiagonal() * jacobian * column_scale.asDiagonal();
     for (std::size_t k = 0; k < held.size(); ++k)
       if (held[k]) jacobian.coeffRef(Eigen::Index(k), Eigen::Index(k)) = 1.0;
-    if (pseudo_transient) add_pseudo_time(model, scales, held, 1.0 / pseudo_time, jacobian);
     if (!factorize(jacobian)) return outcome;
-    VecX dz = -solve(r);
+    VecX dz = column_scale.cwiseProduct(solve(-r.cwiseQuotient(row_scale)));
     if (!dz.allFinite()) return outcome;
     bool capped = false;
     double cap_ratio = 1.0;  // the capped step's length over the Newton step's
@@ -308,7 +329,14 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
     }
     ++outcome.iterations;
     if (at_floor) {
-      state = displaced(model, state, dz);
+      // Kept only if it stays at the floor: near a critical load the Jacobian is nearly singular and
+      // a step on round-off noise can run along the soft mode (the lateral-torsional cantilever at
+      // 0.999 P_cr: 1.2e-12 -> 1.5e-8).
+      const double floor = round_off_floor(model, state, scales.force);
+      if (auto trial = try_step(model, state, dz, lambda, held); trial && trial->measure <= floor) {
+        state = std::move(trial->state);
+        outcome.residual = trial->measure;
+      }
       outcome.converged = true;
       return outcome;
     }

@@ -196,6 +196,41 @@ TEST(Rod3dStatics, MattiassonCantileverConvergesAtSecondOrder) {
   EXPECT_LT(finer.w, 1e-3);
 }
 
+// The statics is free of units: the Mattiasson cantilever with stiffness x mu and length x lambda (the
+// load following, P = 2 EI / L^2) converges to the same dimensionless tip, (tip - root) / L, at any
+// (lambda, mu), Newton's line search and pseudo-transient continuation alike. Before the KKT system
+// was solved in the problem's units (rows over force, moment and length scales, columns times L, 1 and
+// the force scale), EI = 1e9 or 1e12 or L = 1e-3 stopped the load continuation part way (a bare 1 on a
+// held dof's diagonal among entries of EI / L^3 steered the LU's pivoting).
+TEST(Rod3dStatics, EquilibriumIsTheSameInAnyUnits) {
+  const auto dimensionless_tip = [](double lambda, double mu, bool pseudo_transient) {
+    rod::RodModel model;
+    model.elements = 24;
+    model.length = 1.3 * lambda;
+    model.stiffness = Vec3(0.8, 1.7, 4.4) * mu * lambda * lambda;
+    model.root.support = rod::EndSupport::Clamped;
+    model.root.frame = tilted_frame(0.7);
+    model.root.position = Vec3(0.2, 0.4, -0.1) * lambda;
+    model.end_force = 2.0 * model.stiffness[1] / (model.length * model.length) * model.root.frame.col(2);
+    rod::StaticOptions options;
+    options.load_steps = pseudo_transient ? 1 : 4;
+    options.pseudo_transient = pseudo_transient;
+    options.max_iterations = 200;
+    options.tolerance = 1e-12;
+    const auto result = rod::solve_static(model, rod::make_straight_state(model), options);
+    return Vec3((rod::make_solution(model, result.state).vertex_position.back() - model.root.position) /
+                model.length);
+  };
+  for (bool pseudo_transient : {false, true}) {
+    const Vec3 unit = dimensionless_tip(1.0, 1.0, pseudo_transient);
+    for (const auto& [lambda, mu] : {std::pair{1.0, 1e12}, std::pair{1.0, 1e9}, std::pair{1e-3, 1.0},
+                                     std::pair{1e3, 1e-6}, std::pair{1e-2, 1e6}}) {
+      const Vec3 scaled = dimensionless_tip(lambda, mu, pseudo_transient);
+      EXPECT_LE((scaled - unit).norm(), 1e-10) << lambda << " " << mu << " " << pseudo_transient;
+    }
+  }
+}
+
 // Pseudo-transient continuation reaches the same equilibrium as the Newton line search, in one
 // load step from the straight rod (the line search needs four): the regularisation D / tau only
 // changes the path, and the last steps, at tau = 1e6, are Newton steps to the tolerance.

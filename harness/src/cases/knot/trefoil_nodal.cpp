@@ -172,7 +172,7 @@ void add_trefoil_nodal(Registry& registry) {
        make_parameter("barrier", 500.0, 50.0, 5000.0, false, false, "", "barrier stiffness k h^2 / T")},
       element_levels("number of edges", {50, 100, 200}, {50, 100, 200, 400}), std::move(metrics), std::move(gates),
       run);
-  // The knot is posed in units of sqrt(B/T) (B = 1e12 with C scaled alike, T = 1e-3 .. 1e8 pass), so what
+  // The knot is posed in units of sqrt(B/T) (B = 1e12 with C scaled alike, T = 1e-3 .. 1e12 pass), so what
   // shapes it is C/B: measured 0.3 .. 100 pass; at C/B = 0.1 the H deviation's order leaves its window,
   // at 0.007 it is -0.36 and at B = 1e12 (C/B = 1e-12) the knot comes undone. Real rods have C/B =
   // 1/(1 + nu) in [0.67, 1] (isotropic) and about 1.5 (DNA).
