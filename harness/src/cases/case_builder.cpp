@@ -23,6 +23,14 @@ void check_load_window(const Parameters& p, const std::string& length, double lo
                                       format_value(EI), low, high, why));
 }
 
+void check_ratio_window(const Parameters& p, const std::string& numerator, const std::string& denominator, double low,
+                        double high, const std::string& why) {
+  const double ratio = parameter_value(p, numerator) / parameter_value(p, denominator);
+  if (!(ratio >= low && ratio <= high))
+    throw InputError(numerator, fmt::format("invalid parameters: {} / {} = {} must be in [{:g}, {:g}] ({})", numerator,
+                                            denominator, format_value(ratio), low, high, why));
+}
+
 MetricSample error_sample(double computed, double reference) { return {computed, reference, std::abs(computed - reference)}; }
 MetricSample value_sample(double value) { return {value, 0.0, std::abs(value), std::nullopt}; }
 MetricSample value_sample(double value, double size) { return {value, 0.0, std::abs(value), size}; }

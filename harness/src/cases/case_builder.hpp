@@ -39,6 +39,12 @@ GateSpec measured_bound(const std::string& metric, double at_finest, double h_fi
 // skipped elsewhere like a measured bound.
 GateSpec measured_order_gate(const std::string& metric, double order, std::string rationale);
 
+// A stiffness ratio numerator / denominator (C / B, GJ / B, ...) in [low, high]: the ratios at which a
+// case's levels were measured to resolve its problem (the scales alone cancel in a problem posed in
+// its own units). InputError naming the numerator otherwise, with `why` said beyond the ends.
+void check_ratio_window(const Parameters& p, const std::string& numerator, const std::string& denominator, double low,
+                        double high, const std::string& why);
+
 // The load a case's levels resolve, P length^2 / EI in [low, high] (a window measured per case, with
 // the reason beyond its ends in `why`); InputError naming P otherwise. `length` names the parameter
 // that sets the lever arm (L, R).

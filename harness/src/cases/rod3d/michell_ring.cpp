@@ -78,6 +78,12 @@ void add_michell_ring(Registry& registry) {
       element_levels("number of edges", {24, 48, 96}, {24, 48, 96, 192}), std::move(metrics), std::move(gates),
       run);
   c.info.resolution.finest_honoured = double(rod::kMaxRingElements);  // the dense linearisation's limit
+  // C / B in [0.6, 1e4] (measured 2026-11-26 on the default levels): at 0.54 the critical twist's order is
+  // 1.89, at 0.3 and below 1.72 or no level converges (the error constant grows as the twist softens;
+  // finer levels do not rescue 0.3); 1e4 passes, 7.7e11 fails.
+  c.check_parameters = [](const Parameters& p) {
+    check_ratio_window(p, "C", "B", 0.6, 1e4, "the twist-to-bending ratios the levels resolve the critical twist at");
+  };
   registry.add(std::move(c));
 }
 
