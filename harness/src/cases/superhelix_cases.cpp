@@ -206,7 +206,7 @@ double helix_round_off_unit(const Parameters& p) {
   return std::max({1.0, B / C, C / B}) * (1.0 + moment) * std::max({1.0, turns, 1.0 / (2.0 * kPi * turns)});
 }
 void check_helix_round_off_window(const Parameters& p) {
-  const double B = parameter_value(p, "B"), C = parameter_value(p, "C");
+  const double B = parameter_value(p, "B");
   const double turns = helix_turns(p);
   const double moment = parameter_value(p, "twisting_moment") * parameter_value(p, "radius") / B;
   if (!(turns >= 1e-3 && turns <= 2.0))
@@ -218,8 +218,7 @@ void check_helix_round_off_window(const Parameters& p) {
     throw InputError("twisting_moment", fmt::format("invalid parameters: |twisting_moment| x radius / B = {} must "
                                                     "be <= 10",
                                                     format_value(std::abs(moment))));
-  if (!(C / B >= 0.03 && C / B <= 100.0))
-    throw InputError("C", fmt::format("invalid parameters: C / B = {} must be in [0.03, 100]", format_value(C / B)));
+  cases::check_ratio_window(p, "C", "B", 0.03, 100.0, "the twist-to-bending ratios Newton reaches the helix at");
 }
 
 LevelOutput run_helix(const Parameters& p, double level) {

@@ -26,13 +26,10 @@
 #include <cmath>
 #include <string>
 
-#include <fmt/format.h>
-
 #include "../case_builder.hpp"
 #include "contact_profile.hpp"
 #include "knot_cases.hpp"
 #include "rodvv/common/errors.hpp"
-#include "rodvv/common/validation.hpp"
 #include "rodvv/invariants/noether3d.hpp"
 #include "rodvv/solvers/rod3d/self_contact.hpp"
 #include "rodvv/solvers/rod3d/solution.hpp"
@@ -177,11 +174,8 @@ void add_trefoil_nodal(Registry& registry) {
   // at 0.007 it is -0.36 and at B = 1e12 (C/B = 1e-12) the knot comes undone. Real rods have C/B =
   // 1/(1 + nu) in [0.67, 1] (isotropic) and about 1.5 (DNA).
   c.check_parameters = [](const Parameters& p) {
-    const double ratio = parameter_value(p, "C") / parameter_value(p, "B");
-    if (!(ratio >= 0.3 && ratio <= 100.0))
-      throw InputError("C", fmt::format("invalid parameters: C / B = {} must be in [0.3, 100], the twist-to-bending "
-                                        "stiffness ratios at which the tied trefoil holds and its levels resolve H",
-                                        format_value(ratio)));
+    check_ratio_window(p, "C", "B", 0.3, 100.0, "the twist-to-bending ratios at which the tied trefoil holds and "
+                                                "its levels resolve H");
   };
   registry.add(std::move(c));
 }

@@ -110,7 +110,7 @@ LevelOutput run(const Parameters& p, double level) {
 // - C / B in [0.03, 100]: at 0.007 (C = 0.009) an order leaves its window, at B = 1e12 or C = 1e12 all
 //   levels fail.
 void check_helix_parameters(const Parameters& p) {
-  const double B = parameter_value(p, "B"), C = parameter_value(p, "C"), R = parameter_value(p, "radius");
+  const double B = parameter_value(p, "B"), R = parameter_value(p, "radius");
   const double L = parameter_value(p, "L"), a = parameter_value(p, "pitch_angle");
   const double turns = L * std::sin(a) / (2.0 * std::numbers::pi * R);
   const double moment = parameter_value(p, "twisting_moment") * R / B;
@@ -123,8 +123,7 @@ void check_helix_parameters(const Parameters& p) {
                      fmt::format("invalid parameters: twisting_moment x radius / B = {} must be in [-4.5, 5], where "
                                  "the levels resolve the helix",
                                  format_value(moment)));
-  if (!(C / B >= 0.03 && C / B <= 100.0))
-    throw InputError("C", fmt::format("invalid parameters: C / B = {} must be in [0.03, 100]", format_value(C / B)));
+  check_ratio_window(p, "C", "B", 0.03, 100.0, "the twist-to-bending ratios the levels resolve the helix at");
 }
 
 }  // namespace
