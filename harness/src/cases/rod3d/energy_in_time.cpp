@@ -19,9 +19,12 @@
 #include <vector>
 
 #include "../case_builder.hpp"
+#include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
 #include "rod3d_cases.hpp"
 #include "rod3d_support.hpp"
 #include "rodvv/harness/trajectory_metrics.hpp"
+#include "rodvv/solvers/rod3d/discrete_energy.hpp"
 #include "rodvv/solvers/rod3d/dynamics.hpp"
 
 namespace rodvv::harness::rod3d_cases {
@@ -32,10 +35,12 @@ namespace rod = solvers::rod3d;
 using namespace cases;
 constexpr double kPi = std::numbers::pi;
 
+constexpr double kSwingLength = 1.1;
+
 rod::RodModel swing_model(const Parameters& p) {
   rod::RodModel model;
   model.elements = element_count(parameter_value(p, "N"));
-  model.length = 1.1;
+  model.length = kSwingLength;
   model.stiffness = Vec3(0.6, 0.9, 1.6);  // GJ, EI1, EI2
   model.line_density = 0.7;
   model.twist_inertia = 0.1;  // first torsional frequency 3.5, first bending 3.3 (EI1) and 4.4 (EI2)
@@ -90,13 +95,16 @@ LevelOutput run(const Parameters& p, double dt) {
   }
   const auto start = rod::make_dynamic_state(model, rod_state);
   // Energy scale: the work of gravity on the rod over its length, rho S |g| L^2 (E itself holds an
-  // arbitrary gravity constant).
-  const double scale = model.line_density * std::max(model.gravity.norm(), 1e-300) * model.length * model.length;
+  // arbitrary gravity constant), plus the elastic energy of the initial twist, which the swing exchanges
+  // too (with gravity alone as the scale, a weak g under a large twist - g = 1, twist = -3 - made the
+  // Euler loss look unresolved: 0.108 of the scale).
+  const double scale = model.line_density * model.gravity.norm() * model.length * model.length +
+                       rod::energy(model, rod_state).elastic();
   const Run euler = integrate(model, start, dt, t_end, rod::TimeIntegrator::ImplicitEuler, scale);
   const Run midpoint = integrate(model, start, dt, t_end, rod::TimeIntegrator::ImplicitMidpoint, scale);
 
   LevelOutput output;
-  output.metrics["euler_energy_loss"] = value_sample(-euler.final_error, 1.0);  // in units of rho S |g| L^2
+  output.metrics["euler_energy_loss"] = value_sample(-euler.final_error, 1.0);  // in units of the scale above
   output.metrics["euler_max_increase"] = value_sample(std::max(euler.max_increase, 0.0));
   output.metrics["midpoint_energy_error"] = value_sample(midpoint.max_error, 1.0);
   output.metrics["midpoint_final_error"] = diagnostic(midpoint.final_error);
@@ -111,8 +119,8 @@ LevelOutput run(const Parameters& p, double dt) {
   const double steps = std::max(1.0, double(euler.t.size() - 1));
   output.metrics["newton_iterations_per_step"] = diagnostic(double(euler.iterations + midpoint.iterations) / (2.0 * steps));
   output.metrics["jacobians_per_step"] = diagnostic(double(euler.factorizations + midpoint.factorizations) / (2.0 * steps));
-  output.series.push_back(thin_series("implicit Euler (E(t) - E(0)) / rho S g L^2", "t", "dE", euler.t, euler.error));
-  output.series.push_back(thin_series("implicit midpoint (E(t) - E(0)) / rho S g L^2", "t", "dE", midpoint.t, midpoint.error));
+  output.series.push_back(thin_series("implicit Euler (E(t) - E(0)) / energy scale", "t", "dE", euler.t, euler.error));
+  output.series.push_back(thin_series("implicit midpoint (E(t) - E(0)) / energy scale", "t", "dE", midpoint.t, midpoint.error));
   return output;
 }
 
@@ -120,16 +128,17 @@ LevelOutput run(const Parameters& p, double dt) {
 
 void add_energy_in_time(Registry& registry) {
   const double h = 0.0025;  // the finest default time step
-  // Measured at the default parameters (N = 8, g = 3, twist = 1 rad, t_end = 1): Euler loss 2.31e-2,
-  // 1.21e-2, 6.24e-3 (scaled) for dt = 1e-2, 5e-3, 2.5e-3, pairwise orders 0.93, 0.95 (0.90 from 2e-2,
-  // 0.96 to 1.25e-3: tending to 1); midpoint max error 2.96e-6, 7.35e-7, 1.84e-7, order 2.00.
+  // Measured at the default parameters (N = 8, g = 3, twist = 1 rad, t_end = 1), in units of
+  // rho S |g| L^2 + E_elastic(0) (2026-11-26; in units of rho S |g| L^2 alone they were 13 % larger):
+  // Euler loss 2.04e-2, 1.07e-2, 5.52e-3 for dt = 1e-2, 5e-3, 2.5e-3, pairwise orders 0.93, 0.95 (tending
+  // to 1); midpoint max error 2.61e-6, 6.49e-7, 1.62e-7, order 2.00.
   // Bounds C h^p with C = 2 x measured.
   std::vector<GateSpec> gates{
       order_gate("euler_energy_loss", 1.0,
                  "implicit Euler: each mode loses 1 - (1 + omega^2 h^2)^(-t/h) ~ omega^2 h t of its energy, O(h)"),
-      measured_bound("euler_energy_loss", 6.24e-3, h, 1.0),
+      measured_bound("euler_energy_loss", 5.517e-3, h, 1.0),
       order_gate("midpoint_energy_error", 2.0, "implicit midpoint: second-order energy error, no drift"),
-      measured_bound("midpoint_energy_error", 1.84e-7, h, 2.0)};
+      measured_bound("midpoint_energy_error", 1.622e-7, h, 2.0)};
   // Implicit Euler dissipates monotonically here: any increase would be round-off of E (|E| / scale
   // ~ 0.4; 64 eps of it ~ 6e-15). Measured 0 at every level; the claim holds at these parameters
   // (a non-convex energy could allow an increase of O(h^2) elsewhere), hence measured.
@@ -138,12 +147,13 @@ void add_energy_in_time(Registry& registry) {
   monotone.measured = true;
   gates.push_back(monotone);
   std::vector<MetricSpec> metrics{
-      {"euler_energy_loss", MetricKind::Error, "", "implicit Euler: (E(0) - E(t_end)) / (rho S |g| L^2)", false, 1.0},
-      {"midpoint_energy_error", MetricKind::Error, "", "implicit midpoint: max over steps |E(t) - E(0)| / (rho S |g| L^2)",
-       false, 2.0},
-      {"euler_max_increase", MetricKind::Error, "", "implicit Euler: max over steps (E_{n+1} - E_n)^+ / (rho S |g| L^2)",
-       false, std::nullopt},
-      diagnostic_metric("midpoint_final_error", "implicit midpoint: (E(t_end) - E(0)) / (rho S |g| L^2)"),
+      {"euler_energy_loss", MetricKind::Error, "",
+       "implicit Euler: (E(0) - E(t_end)) / (rho S |g| L^2 + E_elastic(0))", false, 1.0},
+      {"midpoint_energy_error", MetricKind::Error, "",
+       "implicit midpoint: max over steps |E(t) - E(0)| / (rho S |g| L^2 + E_elastic(0))", false, 2.0},
+      {"euler_max_increase", MetricKind::Error, "",
+       "implicit Euler: max over steps (E_{n+1} - E_n)^+ / (rho S |g| L^2 + E_elastic(0))", false, std::nullopt},
+      diagnostic_metric("midpoint_final_error", "implicit midpoint: (E(t_end) - E(0)) / (rho S |g| L^2 + E_elastic(0))"),
       diagnostic_metric("tip_difference", "|tip(Euler) - tip(midpoint)| / L at t_end (Euler's O(h) global error)"),
       diagnostic_metric("tip_displacement_t", "midpoint tip displacement along the clamp tangent / L"),
       diagnostic_metric("tip_displacement_m1", "midpoint tip displacement along the clamp's m1 / L"),
@@ -151,7 +161,7 @@ void add_energy_in_time(Registry& registry) {
       diagnostic_metric("tip_twist_change", "midpoint: change of the tip edge's material angle from its time-parallel reference director (rad)"),
       diagnostic_metric("newton_iterations_per_step", "Newton corrections per step (both methods)"),
       diagnostic_metric("jacobians_per_step", "Jacobian assemblies per step (both methods)")};
-  registry.add(make_case(
+  Case c = make_case(
       "rod3d",
       {"rod3d/energy-in-time", "swinging, twisting cantilever under gravity: energy of implicit Euler and midpoint",
        "Inextensible cantilever (N edges, L = 1.1, GJ = 0.6, EI1 = 0.9, EI2 = 1.6, rho S = 0.7, rho I0 = 0.1) clamped "
@@ -165,12 +175,23 @@ void add_energy_in_time(Registry& registry) {
        "discrete elastic rod, implicit Euler and implicit midpoint (solvers/rod3d/dynamics.hpp): Newton on positions, "
        "angles and multipliers in the chart of the previous step, exact banded Jacobian, banded LU; reference frames "
        "carried by time-parallel transport"},
+      // What the dt levels resolve (measured 2026-11-26): g up to 5 (at 10 the Euler loss's order is 0.85: the
+      // swing's omega dt grows as sqrt(g)); t_end from 0.05 (0.03: the midpoint error's order 1.37, a few steps)
+      // to 3 (the torsion's own period does not depend on g: 4.7 at g = 0.3 failed), and the swing
+      // t_end sqrt(g / L) <= 2.5 (2.98 at g = 5 failed; 2.5 passes at g = 1, 3, 5 and any twist).
       {integer_parameter("N", 8.0, 2.0, 64.0, "number of edges"),
-       make_parameter("g", 3.0, 0.0, 100.0, true, false, "length/time^2", "gravity"),
+       make_parameter("g", 3.0, 0.0, 5.0, true, false, "length/time^2", "gravity"),
        make_parameter("twist", 1.0, -3.0, 3.0, false, false, "rad", "initial twist phi of the tip edge"),
-       make_parameter("t_end", 1.0, 0.0, 20.0, true, false, "time", "horizon")},
+       make_parameter("t_end", 1.0, 0.05, 3.0, false, false, "time", "horizon")},
       {"dt", "time step", ResolutionScale::StepSize, {1e-2, 5e-3, 2.5e-3}, {2e-2, 1e-2, 5e-3, 2.5e-3, 1.25e-3}},
-      std::move(metrics), std::move(gates), run));
+      std::move(metrics), std::move(gates), run);
+  c.check_parameters = [](const Parameters& p) {
+    const double swing = parameter_value(p, "t_end") * std::sqrt(parameter_value(p, "g") / kSwingLength);
+    if (!(swing <= 2.5))
+      throw InputError("t_end", "invalid parameters: t_end sqrt(g / L) = " + format_value(swing) + " (L = " +
+                                    format_value(kSwingLength) + ") must be <= 2.5, the swing the levels resolve");
+  };
+  registry.add(std::move(c));
 }
 
 }  // namespace rodvv::harness::rod3d_cases
