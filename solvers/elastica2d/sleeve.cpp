@@ -38,15 +38,17 @@ struct Slot {
 // The joint system in (phi_1, .., phi_K, u): Pi = sum_k Pi_arm_k(phi_k, l_k(u)) + pull * u.
 class JointSystem {
  public:
-  // The gradient is measured in the problem's own units (B and the rod length L): its angle rows are
-  // moments, scaled by B / L, its length row a force, scaled by B / L^2, so that one tolerance means
-  // the same at any B and L (an absolute one failed at P = 1e6 and was empty at P = 1e-6).
-  JointSystem(std::vector<Slot> slots, double pull, std::size_t elements, double bending_stiffness, double rod_length)
+  // The gradient is measured in the problem's own units, the load P and the elastic length
+  // ell = sqrt(B / P) that the arms bend over: its angle rows are moments, scaled by B / ell = sqrt(B P),
+  // its length row a force, scaled by P, so that one tolerance means the same at any B, P and rod length
+  // (an absolute one failed at P = 1e6 and was empty at P = 1e-6; the rod length, mostly inside the
+  // sleeve, is no scale of the arms: with it, rod_length = 1e6 asked for 1e-23 of a force).
+  JointSystem(std::vector<Slot> slots, double pull, std::size_t elements, double bending_stiffness, double load)
       : slots_(std::move(slots)),
         pull_(pull),
         n_(static_cast<Eigen::Index>(elements)),
-        moment_unit_(bending_stiffness / rod_length),
-        force_unit_(bending_stiffness / (rod_length * rod_length)) {}
+        moment_unit_(std::sqrt(bending_stiffness * load)),
+        force_unit_(load) {}
 
   void set_pull(double pull) { pull_ = pull; }
   Eigen::Index angles() const { return n_ * static_cast<Eigen::Index>(slots_.size()); }
@@ -270,7 +272,7 @@ SleeveSolution solve_sleeve(const SleeveProblem& problem, const SleeveSolverOpti
   slot.arm.exit_angle = 0.0;
   slot.arm.tip_force = Vector2d(0.0, -problem.tip_load);
   slot.arm.elements = options.elements;
-  JointSystem system({slot}, problem.pull, options.elements, problem.bending_stiffness, problem.rod_length);
+  JointSystem system({slot}, problem.pull, options.elements, problem.bending_stiffness, problem.tip_load);
   NewtonResult r;
   try {
     r = solve_joint(system, l0, options);
@@ -333,7 +335,8 @@ ArmScaleSolution solve_arm_scale(const ArmScaleProblem& problem, const SleeveSol
   s2.arm.tip_force = Vector2d(0.0, -problem.weight2);
   s2.base = available;
   s2.sign = -1.0;
-  JointSystem system({s1, s2}, 0.0, options.elements, problem.bending_stiffness, problem.rod_length);
+  JointSystem system({s1, s2}, 0.0, options.elements, problem.bending_stiffness,
+                     std::max(problem.weight1, problem.weight2));
   const NewtonResult r = solve_joint(system, u0, options);
 
   ArmScaleSolution sol;

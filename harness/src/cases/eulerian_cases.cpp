@@ -385,7 +385,8 @@ Case standing_wave_case() {
   c.info.parameters = material_parameters();
   c.info.parameters.push_back(make_parameter("amplitude", 0.02, 0.0, 0.3, true, false, "length",
                                              "A (needs A pi/L0 < 1 for F > 0)"));
-  c.info.parameters.push_back(make_parameter("periods", 1.0, 0.0, 20.0, true, false, "", "horizon in periods 2 L0/c"));
+  // From 0.03 periods: at 0.01 the end error's order is 0.74, a horizon of a few steps (measured 2026-11-26).
+  c.info.parameters.push_back(make_parameter("periods", 1.0, 0.03, 20.0, false, false, "", "horizon in periods 2 L0/c"));
   c.info.resolution = cell_resolution({100, 200, 400}, {100, 200, 400, 800, 1600, 3200});
   c.info.metrics = {
       {"end_max_error", MetricKind::Error, "length", "max over time of |x_L - exact| and |x_R - exact|", false, 1.0},

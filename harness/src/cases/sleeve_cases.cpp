@@ -40,8 +40,8 @@ constexpr const char* kMethod =
     "(N edges of length l/N per arm, half-cell clamp at the exit) unknowns of the total potential, "
     "joint Newton with exact gradient and Hessian (bordered banded LU); second order in h = l/N";
 // Newton tolerance of the cases on ||grad Pi||_inf in the problem's units (the solver scales the length
-// row, a force, by B / L^2): that row is S - N_in (sleeve) or N2 - N1 (arm scale), so these
-// differences, in units of B / L^2, are bounded by it at every N and at any B, P and L.
+// row, a force, by the load: P, or the larger weight): that row is S - N_in (sleeve) or N2 - N1 (arm
+// scale), so these differences, in units of that load, are bounded by it at every N and any B, P, L.
 constexpr double kTolerance = 1e-11;
 
 std::size_t element_count(double level) { return static_cast<std::size_t>(std::llround(level)); }
@@ -148,8 +148,7 @@ LevelOutput run_eshelby_level(const Parameters& p, double level) {
   out.metrics["eshelby_identity"] = deviation(s.tension_jump - m * m / (2.0 * b), m * m / (2.0 * b));
   out.metrics["H_continuity"] = deviation(s.axial_force_inside - spread.mean, std::abs(spread.mean));
   out.metrics["H_spread"] = deviation(spread.spread, 1.0);  // in units of H's natural scale
-  const double force_unit = b / (problem.rod_length * problem.rod_length);
-  out.metrics["N_in_vs_S"] = deviation((s.axial_force_inside - problem.pull) / force_unit);
+  out.metrics["N_in_vs_S"] = deviation((s.axial_force_inside - problem.pull) / problem.tip_load);
   out.metrics["tension_jump"] = {s.tension_jump, std::nullopt, std::nullopt};
   out.metrics["length_stiffness"] = {s.length_stiffness, std::nullopt, std::nullopt};
   out.metrics["newton_iterations"] = {double(s.iterations), std::nullopt, std::nullopt};
@@ -198,7 +197,7 @@ Case eshelby_case() {
       invariant_metric("eshelby_identity", "N_in - N_out - M_e^2/(2B) (N_in from the equilibrium in l)", 2.0),
       invariant_metric("H_continuity", "H inside (= N_in) - mean of H along the arm", 2.0),
       invariant_metric("H_spread", "max |H(s) - mean| / natural scale along the arm", 2.0),
-      invariant_metric("N_in_vs_S", "(N_in - S) / (B/L^2), N_in = -dPi_arm/dl: the length row of the gradient",
+      invariant_metric("N_in_vs_S", "(N_in - S) / P, N_in = -dPi_arm/dl: the length row of the gradient",
                        std::nullopt),
       diagnostic("tension_jump", "N_in - N_out at the exit"),
       diagnostic("length_stiffness", "d2Pi*/dl2 (< 0: unstable under the dead pull)"),
@@ -215,7 +214,7 @@ Case eshelby_case() {
   second_order(c, "H_continuity", 1.1856e-05, 256, "H of the arm is O(h^2) from H_in");
   second_order(c, "H_spread", 1.0292e-06, 256, "H drift of a smooth discrete solution: O(h^2)");
   c.gates.push_back(upper_bound_gate("N_in_vs_S", kTolerance, GateScope::AllLevels,
-                                     "the length row of grad Pi, (S - N_in) / (B/L^2): <= the Newton tolerance 1e-11"));
+                                     "the length row of grad Pi, (S - N_in) / P: <= the Newton tolerance 1e-11"));
   c.run_level = [](const Parameters& p, double level) { return run_eshelby_level(p, level); };
   return c;
 }
@@ -301,8 +300,7 @@ LevelOutput run_arm_scale_level(const Parameters& p, double level) {
   out.metrics["H_continuity"] =
       deviation(std::max(std::abs(s.axial_force - h1.mean), std::abs(s.axial_force - h2.mean)), std::abs(s.axial_force));
   out.metrics["H_spread"] = deviation(std::max(h1.spread, h2.spread), 1.0);
-  const double force_unit = b / (problem.rod_length * problem.rod_length);
-  out.metrics["N1_vs_N2"] = deviation((s.axial_force - s.axial_force_arm2) / force_unit);
+  out.metrics["N1_vs_N2"] = deviation((s.axial_force - s.axial_force_arm2) / std::max(w1, w2));
   out.metrics["length_stiffness"] = {s.length_stiffness, std::nullopt, std::nullopt};
   out.metrics["newton_iterations"] = {double(s.iterations), std::nullopt, std::nullopt};
 
@@ -368,7 +366,7 @@ Case arm_scale_case() {
       invariant_metric("eshelby_balance", "(P1 + P2) sin alpha - (M2^2 - M1^2)/(2B)", 2.0),
       invariant_metric("H_continuity", "max over arms |N - mean H of the arm|", 2.0),
       invariant_metric("H_spread", "max over arms of max |H(s) - mean| / natural scale", 2.0),
-      invariant_metric("N1_vs_N2", "(N1 - N2) / (B/L^2), N_k = -dPi_k/dl_k: the length row of the gradient in its unit", std::nullopt),
+      invariant_metric("N1_vs_N2", "(N1 - N2) / max(P1, P2), N_k = -dPi_k/dl_k: the length row of the gradient in its unit", std::nullopt),
       diagnostic("length_stiffness", "d2Pi*/dl1^2"),
       diagnostic("newton_iterations", "Newton iterations")};
   const std::string why = "smooth solution, polygon with half-cell clamp: O(h^2)";
@@ -386,7 +384,7 @@ Case arm_scale_case() {
   second_order(c, "H_continuity", 5.4810e-06, 256, why);
   second_order(c, "H_spread", 4.2382e-07, 256, "H drift of a smooth discrete solution: O(h^2)");
   c.gates.push_back(upper_bound_gate("N1_vs_N2", kTolerance, GateScope::AllLevels,
-                                     "the length row of grad Pi, (N2 - N1) / (B/L^2): <= the Newton tolerance 1e-11"));
+                                     "the length row of grad Pi, (N2 - N1) / max(P1, P2): <= the Newton tolerance 1e-11"));
   c.run_level = [](const Parameters& p, double level) { return run_arm_scale_level(p, level); };
   return c;
 }

@@ -71,8 +71,8 @@ struct ArmScaleProblem {
 
 struct SleeveSolverOptions {
   std::size_t elements = 64;        // N per arm, >= 2
-  double tolerance = 1e-11;         // on ||grad Pi||_inf in the problem's own units (angle rows / (B/L),
-                                    // the length row / (B/L^2)), in (0, 1)
+  double tolerance = 1e-11;         // on ||grad Pi||_inf in the problem's own units (angle rows / sqrt(B P),
+                                    // the length row / P; P the tip load, the larger weight), in (0, 1)
   std::size_t max_iterations = 100;  // Newton iterations, >= 1
   // Starting free length (sleeve: l; arm scale: l1). Default: sleeve sqrt(2 B S) / P (the
   // small-deflection balance S = (P l)^2 / (2B) would give it, used only as a start);
