@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <Eigen/Geometry>
 #include <fmt/format.h>
@@ -29,6 +30,19 @@ void check_ratio_window(const Parameters& p, const std::string& numerator, const
   if (!(ratio >= low && ratio <= high))
     throw InputError(numerator, fmt::format("invalid parameters: {} / {} = {} must be in [{:g}, {:g}] ({})", numerator,
                                             denominator, format_value(ratio), low, high, why));
+}
+
+double helix_turns(const Parameters& p) {
+  return parameter_value(p, "L") * std::sin(parameter_value(p, "pitch_angle")) /
+         (2.0 * std::numbers::pi * parameter_value(p, "radius"));
+}
+
+void check_swing_window(const Parameters& p, double length, double max_swing) {
+  const double swing = parameter_value(p, "t_end") * std::sqrt(parameter_value(p, "g") / length);
+  if (!(swing <= max_swing))
+    throw InputError("t_end", fmt::format("invalid parameters: t_end sqrt(g / L) = {} (L = {}) must be <= {:g}, the "
+                                          "swing the levels resolve",
+                                          format_value(swing), format_value(length), max_swing));
 }
 
 MetricSample error_sample(double computed, double reference) { return {computed, reference, std::abs(computed - reference)}; }

@@ -45,6 +45,14 @@ GateSpec measured_order_gate(const std::string& metric, double order, std::strin
 void check_ratio_window(const Parameters& p, const std::string& numerator, const std::string& denominator, double low,
                         double high, const std::string& why);
 
+// The turns L sin(pitch_angle) / (2 pi radius) of a uniform helix, from the parameters L, radius and
+// pitch_angle (the helix cases of both 3-D rods).
+double helix_turns(const Parameters& p);
+
+// The swing t_end sqrt(g / length) a dynamic case's time levels resolve, at most max_swing (measured per
+// case); InputError naming t_end otherwise.
+void check_swing_window(const Parameters& p, double length, double max_swing);
+
 // The load a case's levels resolve, P length^2 / EI in [low, high] (a window measured per case, with
 // the reason beyond its ends in `why`); InputError naming P otherwise. `length` names the parameter
 // that sets the lever arm (L, R).

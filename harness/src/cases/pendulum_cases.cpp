@@ -119,27 +119,29 @@ Parameter omega_parameter(bool unit_scale) {
   return omega;
 }
 
+Parameter ranged_parameter(const std::string& name, double value, const Range& range, const char* unit,
+                           const char* description) {
+  return make_parameter(name, value, range.min, range.max, range.min_open, range.max_open, unit, description);
+}
+
 Parameters motion_parameters(const Motion& motion, bool omega_is_unit_scale) {
   Parameters parameters{omega_parameter(omega_is_unit_scale)};
   switch (motion.kind) {
     case MotionKind::Libration:
-      parameters.push_back(make_parameter("theta0_deg", motion.amplitude, motion.amplitude_range.min,
-                                          motion.amplitude_range.max, motion.amplitude_range.min_open,
-                                          motion.amplitude_range.max_open, "deg", "release angle (from rest)"));
-      parameters.push_back(make_parameter("periods", motion.horizon, motion.horizon_range.min, motion.horizon_range.max,
-                                          false, false, "", "integration horizon in periods 4K(k)/omega"));
+      parameters.push_back(ranged_parameter("theta0_deg", motion.amplitude, motion.amplitude_range, "deg",
+                                            "release angle (from rest)"));
+      parameters.push_back(ranged_parameter("periods", motion.horizon, motion.horizon_range, "",
+                                            "integration horizon in periods 4K(k)/omega"));
       break;
     case MotionKind::Rotation:
-      parameters.push_back(make_parameter("v0_over_omega", motion.amplitude, motion.amplitude_range.min,
-                                          motion.amplitude_range.max, false, false, "",
-                                          "initial rate theta'(0) / omega (> 2 for rotation)"));
-      parameters.push_back(make_parameter("turns", motion.horizon, motion.horizon_range.min, motion.horizon_range.max,
-                                          false, false, "", "integration horizon in full turns"));
+      parameters.push_back(ranged_parameter("v0_over_omega", motion.amplitude, motion.amplitude_range, "",
+                                            "initial rate theta'(0) / omega (> 2 for rotation)"));
+      parameters.push_back(ranged_parameter("turns", motion.horizon, motion.horizon_range, "",
+                                            "integration horizon in full turns"));
       break;
     case MotionKind::Separatrix:
-      parameters.push_back(make_parameter("omega_t_end", motion.horizon, motion.horizon_range.min,
-                                          motion.horizon_range.max, false, false, "1/omega",
-                                          "integration horizon in units of 1/omega"));
+      parameters.push_back(ranged_parameter("omega_t_end", motion.horizon, motion.horizon_range, "1/omega",
+                                            "integration horizon in units of 1/omega"));
       break;
   }
   return parameters;

@@ -123,9 +123,9 @@ LevelOutput run_tension_level(e2d::Scheme scheme, const Parameters& parameters, 
   LevelOutput output;
   const double error = std::hypot(solution.x.back() - stretched * std::cos(angle),
                                   solution.y.back() - stretched * std::sin(angle));
-  // Sized by the larger of L and the stretched length and by the larger of |F| and EI / L^2 = 1 (the
-  // residual's force scale):
-  // the round-off of a sum of N chords, and of a force balance, follow them (the gates are relative).
+  // Sized by the larger of L and the stretched length, and by the larger of |F| and EI / L^2 = 1 (the
+  // residual's force scale): the round-off of a sum of N chords, and of a force balance, follow them (the
+  // gates are relative).
   output.metrics["end_displacement"] = {std::hypot(solution.x.back(), solution.y.back()) - L,
                                         stretched - L, error, std::max(L, stretched)};
   double force_error = 0.0;

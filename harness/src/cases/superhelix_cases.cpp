@@ -88,6 +88,7 @@ using cases::diagnostic_metric;
 using cases::element_count;
 using cases::error_metric;
 using cases::error_sample;
+using cases::helix_turns;
 using cases::invariant_metric;
 using cases::measured_bound;
 using cases::noether3d_metric_specs;
@@ -198,10 +199,6 @@ LevelOutput run_roll_up(const Parameters& p, double level) {
 constexpr const char* kHelixRoundOffMetrics[] = {"shape_max_error", "frame_max_error", "strain_max_error",
                                                  "H_spread",        "H_mean",          "H_form_difference"};
 constexpr double kHelixRoundOffUnits = 1e5;
-double helix_turns(const Parameters& p) {
-  return parameter_value(p, "L") * std::sin(parameter_value(p, "pitch_angle")) /
-         (2.0 * kPi * parameter_value(p, "radius"));
-}
 double helix_round_off_unit(const Parameters& p) {
   const double B = parameter_value(p, "B"), C = parameter_value(p, "C"), turns = helix_turns(p);
   const double moment = std::abs(parameter_value(p, "twisting_moment")) * parameter_value(p, "radius") / B;
@@ -245,9 +242,8 @@ LevelOutput run_helix(const Parameters& p, double level) {
   // to THE helix: 3 to 9 steps). From 10 % it left its basin on longer or tighter helices (L = 13, 14,
   // 20; radius 0.3; M_t = 100: line search failed at N = 8) although the helix is the equilibrium there;
   // from 1 % it reached another equilibrium of N = 4 elements (strain error 0.03) in 2 of 300 random
-  // parameter sets with less than one turn, from 0.1 % in none.
-  const double turns = L * std::sin(helix.pitch_angle) / (2.0 * kPi * helix.radius);
-  const double offset = 0.001 / std::max(1.0, turns);
+  // parameter sets with less than one turn, from 0.1 % in 1 of 300 (check_helix_round_off_window).
+  const double offset = 0.001 / std::max(1.0, helix_turns(p));
   for (std::size_t e = 0; e < model.elements; ++e)
     options.initial_q.segment<3>(3 * e) = (1.0 - offset) * Vec3(exact.tau, exact.kappa, 0.0);
   const auto result = sh::solve_static(model, options);
@@ -1064,12 +1060,7 @@ void register_superhelix_cases(Registry& registry) {
     // The swing the levels resolve: t_end sqrt(g / L) <= 3 (L = 0.7; defaults 0.42): at 3.8 (g = 10,
     // t_end = 1) and 4.8 (g = 100, t_end = 0.4) the loss's order leaves its window; 3 passes at g = 20,
     // 50, 100 (measured 2026-11-26).
-    c.check_parameters = [](const Parameters& p) {
-      const double swing = parameter_value(p, "t_end") * std::sqrt(parameter_value(p, "g") / kEnergyRodLength);
-      if (!(swing <= 3.0))
-        throw InputError("t_end", "invalid parameters: t_end sqrt(g / L) = " + format_value(swing) +
-                                      " (L = 0.7) must be <= 3, the swing the levels resolve");
-    };
+    c.check_parameters = [](const Parameters& p) { cases::check_swing_window(p, kEnergyRodLength, 3.0); };
     registry.add(std::move(c));
   }
   {

@@ -19,8 +19,6 @@
 #include <vector>
 
 #include "../case_builder.hpp"
-#include "rodvv/common/errors.hpp"
-#include "rodvv/common/validation.hpp"
 #include "rod3d_cases.hpp"
 #include "rod3d_support.hpp"
 #include "rodvv/harness/trajectory_metrics.hpp"
@@ -185,12 +183,7 @@ void add_energy_in_time(Registry& registry) {
        make_parameter("t_end", 1.0, 0.05, 3.0, false, false, "time", "horizon")},
       {"dt", "time step", ResolutionScale::StepSize, {1e-2, 5e-3, 2.5e-3}, {2e-2, 1e-2, 5e-3, 2.5e-3, 1.25e-3}},
       std::move(metrics), std::move(gates), run);
-  c.check_parameters = [](const Parameters& p) {
-    const double swing = parameter_value(p, "t_end") * std::sqrt(parameter_value(p, "g") / kSwingLength);
-    if (!(swing <= 2.5))
-      throw InputError("t_end", "invalid parameters: t_end sqrt(g / L) = " + format_value(swing) + " (L = " +
-                                    format_value(kSwingLength) + ") must be <= 2.5, the swing the levels resolve");
-  };
+  c.check_parameters = [](const Parameters& p) { check_swing_window(p, kSwingLength, 2.5); };
   registry.add(std::move(c));
 }
 

@@ -44,8 +44,7 @@ LevelOutput run(const Parameters& p, double level) {
   model.root.frame = root.frame;
   model.end_force = tip.force;    // the axial wrench as a dead tip force ...
   model.end_moment = tip.moment;  // ... and the moment m(L) it carries
-  const double turns = L * std::sin(helix.pitch_angle) / (2.0 * std::numbers::pi * helix.radius);
-  const double offset = 0.01 / std::max(1.0, turns);
+  const double offset = 0.01 / std::max(1.0, helix_turns(p));
   ref::AxialWrenchHelix start = helix;
   start.radius *= 1.0 - offset;
   start.pitch_angle *= 1.0 - offset;
@@ -110,10 +109,8 @@ LevelOutput run(const Parameters& p, double level) {
 // - C / B in [0.03, 100]: at 0.007 (C = 0.009) an order leaves its window, at B = 1e12 or C = 1e12 all
 //   levels fail.
 void check_helix_parameters(const Parameters& p) {
-  const double B = parameter_value(p, "B"), R = parameter_value(p, "radius");
-  const double L = parameter_value(p, "L"), a = parameter_value(p, "pitch_angle");
-  const double turns = L * std::sin(a) / (2.0 * std::numbers::pi * R);
-  const double moment = parameter_value(p, "twisting_moment") * R / B;
+  const double turns = helix_turns(p);
+  const double moment = parameter_value(p, "twisting_moment") * parameter_value(p, "radius") / parameter_value(p, "B");
   if (!(turns >= 0.015 && turns <= 1.5))
     throw InputError("L", fmt::format("invalid parameters: the helix makes L sin(pitch_angle) / (2 pi radius) = {} "
                                       "turns; the levels resolve [0.015, 1.5]",
