@@ -6,7 +6,6 @@
 // not that it stays put.
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include <fmt/format.h>
 
