@@ -195,6 +195,7 @@ int list_command(const std::vector<std::string>& patterns, bool verbose) {
     for (const auto& parameter : info.parameters)
       fmt::print("    --set {}={:g}  {}; {}\n", parameter.name, parameter.value, harness::describe_allowed(parameter),
                  parameter.description);
+    for (const auto& window : info.parameter_windows) fmt::print("    requires: {}\n", window);
     for (const auto& gate : c->gates) fmt::print("    gate: {}\n", gate.name);
   }
   fmt::print(stderr, "{} cases\n", cases.size());

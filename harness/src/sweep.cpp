@@ -115,6 +115,14 @@ void validate_levels(const Case& c, std::span<const double> levels) {
                                    std::to_string(levels.size()));
 }
 
+void require_window(Case& c, std::string statement, ParameterCheck check) {
+  c.info.parameter_windows.push_back(std::move(statement));
+  c.check_parameters = [earlier = std::move(c.check_parameters), check = std::move(check)](const Parameters& p) {
+    if (earlier) earlier(p);
+    check(p);
+  };
+}
+
 void split_level(Case& c, SolveLevel solve, MeasureSolution measure) {
   c.run_level = [solve, measure](const Parameters& parameters, double level) {
     return measure(parameters, level, solve(parameters, level));

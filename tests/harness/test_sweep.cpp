@@ -85,6 +85,35 @@ TEST(Sweep, RejectsBadLevels) {
   EXPECT_THROW(validate_levels(c, fractional), rodvv::InputError);
 }
 
+// A window on a combination of parameters is both listed (info.parameter_windows, for `list -v`) and
+// checked before any level runs, after the case's earlier checks.
+TEST(Sweep, ParameterWindowsAreListedAndCheckedAfterEarlierChecks) {
+  Case c = synthetic_case(2.0);
+  int earlier_calls = 0;
+  c.check_parameters = [&earlier_calls](const Parameters&) { ++earlier_calls; };
+  require_window(c, "c <= 10", [](const Parameters& p) {
+    if (parameter_value(p, "c") > 10.0) throw rodvv::InputError("c", "c must be <= 10");
+  });
+  ASSERT_EQ(c.info.parameter_windows, std::vector<std::string>{"c <= 10"});
+  EXPECT_NO_THROW(run_sweep(c, c.info.parameters, c.info.resolution.default_levels));
+  EXPECT_EQ(earlier_calls, 1);
+  Parameters outside = c.info.parameters;
+  outside[0].value = 20.0;
+  EXPECT_THROW(run_sweep(c, outside, c.info.resolution.default_levels), rodvv::InputError);
+  EXPECT_EQ(earlier_calls, 2);
+}
+
+// Every case's defaults lie inside its own windows (a window that refused them would refuse the run
+// `rodvv run` makes by default), and every listed window is a non-empty statement.
+TEST(Registry, EveryCaseAcceptsItsDefaultsInsideItsWindows) {
+  for (const Case* c : default_registry().select({})) {
+    if (c->check_parameters) {
+      EXPECT_NO_THROW(c->check_parameters(c->info.parameters)) << c->info.name;
+    }
+    for (const auto& window : c->info.parameter_windows) EXPECT_FALSE(window.empty()) << c->info.name;
+  }
+}
+
 TEST(Registry, SelectsByNamePrefixAndGlob) {
   Registry registry;
   for (const char* name : {"a/x/one", "a/x/two", "a/y/one", "b/z/one"}) {

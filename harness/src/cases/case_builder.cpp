@@ -14,22 +14,36 @@
 
 namespace rodvv::harness::cases {
 
-void check_load_window(const Parameters& p, const std::string& length, double low, double high, const std::string& why) {
-  const double arm = parameter_value(p, length), EI = parameter_value(p, "EI"), P = parameter_value(p, "P");
-  const double load = P * arm * arm / EI;
-  if (!(load >= low && load <= high))
-    throw InputError("P", fmt::format("invalid parameter 'P' = {}: the load P {}^2 / EI = {} ({} = {}, EI = {}) must be "
-                                      "in [{:g}, {:g}] ({})",
-                                      format_value(P), length, format_value(load), length, format_value(arm),
-                                      format_value(EI), low, high, why));
+namespace {
+// "in [low, high]", or ">= low" for an open top.
+std::string interval_text(double low, double high) {
+  return std::isinf(high) ? fmt::format(">= {:g}", low) : fmt::format("in [{:g}, {:g}]", low, high);
+}
+}  // namespace
+
+void require(Case& c, Window window) { require_window(c, std::move(window.statement), std::move(window.check)); }
+
+Window ratio_window(std::string numerator, std::string denominator, double low, double high, std::string why) {
+  std::string statement = fmt::format("{} / {} {} ({})", numerator, denominator, interval_text(low, high), why);
+  return {statement, [=](const Parameters& p) {
+            const double ratio = parameter_value(p, numerator) / parameter_value(p, denominator);
+            if (!(ratio >= low && ratio <= high))
+              throw InputError(numerator, fmt::format("invalid parameters: {} / {} = {} must be {} ({})", numerator,
+                                                      denominator, format_value(ratio), interval_text(low, high), why));
+          }};
 }
 
-void check_ratio_window(const Parameters& p, const std::string& numerator, const std::string& denominator, double low,
-                        double high, const std::string& why) {
-  const double ratio = parameter_value(p, numerator) / parameter_value(p, denominator);
-  if (!(ratio >= low && ratio <= high))
-    throw InputError(numerator, fmt::format("invalid parameters: {} / {} = {} must be in [{:g}, {:g}] ({})", numerator,
-                                            denominator, format_value(ratio), low, high, why));
+Window load_window(std::string length, double low, double high, std::string why) {
+  std::string statement = fmt::format("P {}^2 / EI {} ({})", length, interval_text(low, high), why);
+  return {statement, [=](const Parameters& p) {
+            const double arm = parameter_value(p, length), EI = parameter_value(p, "EI"), P = parameter_value(p, "P");
+            const double load = P * arm * arm / EI;
+            if (!(load >= low && load <= high))
+              throw InputError("P", fmt::format("invalid parameter 'P' = {}: the load P {}^2 / EI = {} ({} = {}, EI = "
+                                                "{}) must be {} ({})",
+                                                format_value(P), length, format_value(load), length, format_value(arm),
+                                                format_value(EI), interval_text(low, high), why));
+          }};
 }
 
 double helix_turns(const Parameters& p) {
@@ -37,12 +51,28 @@ double helix_turns(const Parameters& p) {
          (2.0 * std::numbers::pi * parameter_value(p, "radius"));
 }
 
-void check_swing_window(const Parameters& p, double length, double max_swing) {
-  const double swing = parameter_value(p, "t_end") * std::sqrt(parameter_value(p, "g") / length);
-  if (!(swing <= max_swing))
-    throw InputError("t_end", fmt::format("invalid parameters: t_end sqrt(g / L) = {} (L = {}) must be <= {:g}, the "
-                                          "swing the levels resolve",
-                                          format_value(swing), format_value(length), max_swing));
+Window helix_turns_window(double low, double high, std::string why) {
+  std::string statement =
+      fmt::format("helix turns L sin(pitch_angle) / (2 pi radius) {} ({})", interval_text(low, high), why);
+  return {statement, [=](const Parameters& p) {
+            const double turns = helix_turns(p);
+            if (!(turns >= low && turns <= high))
+              throw InputError("L", fmt::format("invalid parameters: the helix makes L sin(pitch_angle) / (2 pi radius) "
+                                                "= {} turns, which must be {} ({})",
+                                                format_value(turns), interval_text(low, high), why));
+          }};
+}
+
+Window swing_window(double length, double max_swing) {
+  std::string statement = fmt::format("t_end sqrt(g / {:g}) <= {:g} (the swing the time levels resolve)", length,
+                                      max_swing);
+  return {statement, [=](const Parameters& p) {
+            const double swing = parameter_value(p, "t_end") * std::sqrt(parameter_value(p, "g") / length);
+            if (!(swing <= max_swing))
+              throw InputError("t_end", fmt::format("invalid parameters: t_end sqrt(g / L) = {} (L = {}) must be <= "
+                                                    "{:g}, the swing the levels resolve",
+                                                    format_value(swing), format_value(length), max_swing));
+          }};
 }
 
 MetricSample error_sample(double computed, double reference) { return {computed, reference, std::abs(computed - reference)}; }

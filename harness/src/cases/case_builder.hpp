@@ -39,24 +39,34 @@ GateSpec measured_bound(const std::string& metric, double at_finest, double h_fi
 // skipped elsewhere like a measured bound.
 GateSpec measured_order_gate(const std::string& metric, double order, std::string rationale);
 
-// A stiffness ratio numerator / denominator (C / B, GJ / B, ...) in [low, high]: the ratios at which a
-// case's levels were measured to resolve its problem (the scales alone cancel in a problem posed in
-// its own units). InputError naming the numerator otherwise, with `why` said beyond the ends.
-void check_ratio_window(const Parameters& p, const std::string& numerator, const std::string& denominator, double low,
-                        double high, const std::string& why);
+// A window on a combination of parameters (case.hpp, require_window): the statement `list -v`
+// prints and the check a run applies, made from the same numbers.
+struct Window {
+  std::string statement;
+  ParameterCheck check;
+};
+void require(Case& c, Window window);
 
-// The turns L sin(pitch_angle) / (2 pi radius) of a uniform helix, from the parameters L, radius and
-// pitch_angle (the helix cases of both 3-D rods).
-double helix_turns(const Parameters& p);
-
-// The swing t_end sqrt(g / length) a dynamic case's time levels resolve, at most max_swing (measured per
-// case); InputError naming t_end otherwise.
-void check_swing_window(const Parameters& p, double length, double max_swing);
+// A stiffness ratio numerator / denominator (C / B, GJ / B, ...) in [low, high] (high may be
+// infinite): the ratios at which a case's levels were measured to resolve its problem (the scales
+// alone cancel in a problem posed in its own units). InputError naming the numerator otherwise, with
+// `why` said beyond the ends.
+Window ratio_window(std::string numerator, std::string denominator, double low, double high, std::string why);
 
 // The load a case's levels resolve, P length^2 / EI in [low, high] (a window measured per case, with
 // the reason beyond its ends in `why`); InputError naming P otherwise. `length` names the parameter
 // that sets the lever arm (L, R).
-void check_load_window(const Parameters& p, const std::string& length, double low, double high, const std::string& why);
+Window load_window(std::string length, double low, double high, std::string why);
+
+// The swing t_end sqrt(g / length) a dynamic case's time levels resolve, at most max_swing (measured per
+// case); InputError naming t_end otherwise.
+Window swing_window(double length, double max_swing);
+
+// The turns L sin(pitch_angle) / (2 pi radius) of a uniform helix, from the parameters L, radius and
+// pitch_angle (the helix cases of both 3-D rods).
+double helix_turns(const Parameters& p);
+// The helix turns in [low, high]; InputError naming L otherwise, with `why` said beyond the ends.
+Window helix_turns_window(double low, double high, std::string why);
 
 struct CaseText {
   std::string name, title, physics, reference, citation, method;

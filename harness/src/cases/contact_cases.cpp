@@ -292,7 +292,8 @@ Case cavity_case(e2d::Scheme scheme, Regime regime, bool lcp = false) {
                      std::string("imposed end-shortening L - chord, inside the ") + regime_words(regime) +
                          " regime of the wall gap (at wall_gap = 0.1: " + regime_interval_text(regime, 0.1) + ")"),
       make_parameter("wall_gap", 0.1, 0.0, 0.3, true, false, "length", "walls at y = +/- wall_gap")};
-  c.check_parameters = [regime](const Parameters& p) { check_regime(regime, p); };
+  require_window(c, std::string("shortening inside the ") + regime_words(regime) + " regime of wall_gap",
+                 [regime](const Parameters& p) { check_regime(regime, p); });
   c.info.resolution = {"N", "number of elements", ResolutionScale::Count, {32, 64, 128, 256},
                        {32, 64, 128, 256, 512, 1024}};
   c.info.metrics = {error_metric("P", "force", "compressive end load vs the reference"),

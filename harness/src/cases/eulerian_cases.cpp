@@ -393,13 +393,15 @@ Case standing_wave_case() {
       {"energy_change", MetricKind::Diagnostic, "energy",
        "E(t_end) - E(0), kinetic + elastic (upwind dissipates O(dx))", false, std::nullopt},
       mass_metric(), steps_metric()};
-  c.check_parameters = [](const Parameters& p) {
-    const double A = parameter_value(p, "amplitude"), L0 = parameter_value(p, "L0");
-    if (!(A * std::numbers::pi < L0))
-      throw InputError("amplitude", "invalid parameter 'amplitude' = " + format_value(A) + ": must be < L0/pi = " +
-                                        format_value(L0 / std::numbers::pi) + " (F = 1 - A pi/L0 sin cos > 0)");
-    ref::validate(standing_wave_setup(p).motion);
-  };
+  require_window(c, "amplitude < L0 / pi (the deformation gradient F = 1 - A pi/L0 sin cos stays > 0)",
+                 [](const Parameters& p) {
+                   const double A = parameter_value(p, "amplitude"), L0 = parameter_value(p, "L0");
+                   if (!(A * std::numbers::pi < L0))
+                     throw InputError("amplitude", "invalid parameter 'amplitude' = " + format_value(A) +
+                                                       ": must be < L0/pi = " + format_value(L0 / std::numbers::pi) +
+                                                       " (F = 1 - A pi/L0 sin cos > 0)");
+                   ref::validate(standing_wave_setup(p).motion);
+                 });
   c.run_level = [](const Parameters& p, double level) {
     const Setup setup = standing_wave_setup(p);
     const Run run = simulate_setup(setup, p, level);
@@ -517,8 +519,9 @@ Case impact_case() {
       {"mean_wall_force", MetricKind::Error, "force", "impulse / contact duration vs rho0 c v0", false, std::nullopt},
       penetration_metric(), projection_metric(), mass_metric(), steps_metric()};
   c.info.parameters.push_back(projection_parameter());
-  c.check_parameters = [](const Parameters& p) {
-    require_below_wave_speed(p);
+  require_window(c, "v0 < c = sqrt(kappa / rho0)", require_below_wave_speed);
+  c.check_parameters = [earlier = std::move(c.check_parameters)](const Parameters& p) {
+    earlier(p);
     ref::validate(impact_setup(p).motion);
   };
   c.run_level = [](const Parameters& p, double level) {
@@ -635,22 +638,28 @@ Case seed_collision_case() {
   // bar keeps 73 cells at N = 200 (span 3.1 L0 - L0 = 0.7, left_wall = -2, right_wall = 2.5 - gave orders
   // -0.3 .. -0.16), and a Mach number v0/c of at most 0.4 (0.45 - kappa = 5 or rho0 = 2 - and 0.63 failed;
   // the corners 2.75 L0 with v0/c = 0.4 pass).
-  c.check_parameters = [](const Parameters& p) {
-    require_below_wave_speed(p);
-    const SeedCollision s = seed_collision_of(p);
-    if (!(s.right_wall >= s.material.length))
-      throw InputError("right_wall", "invalid parameter 'right_wall' = " + format_value(s.right_wall) +
-                                         ": must be >= L0 = " + format_value(s.material.length) +
-                                         " (the bar starts on [0, L0]; a wall may not overlap it)");
-    const double span = (s.right_wall - s.left_wall) / s.material.length;
-    if (!(span <= 2.75))
-      throw InputError("left_wall", "invalid parameters: the walls span (right_wall - left_wall) / L0 = " +
-                                        format_value(span) + " bar lengths; the levels resolve at most 2.75");
-    const double mach = s.v0 / ref::bar_wave_speed(s.material);
-    if (!(mach <= 0.4))
-      throw InputError("v0", "invalid parameters: v0 / c = " + format_value(mach) +
-                                 " (c = sqrt(kappa/rho0)) must be <= 0.4, where the levels resolve the impacts");
-  };
+  require_window(c, "v0 / c <= 0.4, c = sqrt(kappa / rho0) (where the levels resolve the impacts)",
+                 [](const Parameters& p) {
+                   require_below_wave_speed(p);
+                   const SeedCollision s = seed_collision_of(p);
+                   const double mach = s.v0 / ref::bar_wave_speed(s.material);
+                   if (!(mach <= 0.4))
+                     throw InputError("v0", "invalid parameters: v0 / c = " + format_value(mach) +
+                                                " (c = sqrt(kappa/rho0)) must be <= 0.4, where the levels resolve the "
+                                                "impacts");
+                 });
+  require_window(c, "right_wall >= L0 and (right_wall - left_wall) / L0 <= 2.75 (the span the levels resolve)",
+                 [](const Parameters& p) {
+                   const SeedCollision s = seed_collision_of(p);
+                   if (!(s.right_wall >= s.material.length))
+                     throw InputError("right_wall", "invalid parameter 'right_wall' = " + format_value(s.right_wall) +
+                                                        ": must be >= L0 = " + format_value(s.material.length) +
+                                                        " (the bar starts on [0, L0]; a wall may not overlap it)");
+                   const double span = (s.right_wall - s.left_wall) / s.material.length;
+                   if (!(span <= 2.75))
+                     throw InputError("left_wall", "invalid parameters: the walls span (right_wall - left_wall) / L0 = " +
+                                                       format_value(span) + " bar lengths; the levels resolve at most 2.75");
+                 });
   c.run_level = [](const Parameters& p, double level) {
     const SeedCollision s = seed_collision_of(p);
     const double L0 = s.material.length;
@@ -710,9 +719,12 @@ Case with_work_budget(Case c, LeastWorkAt least_work, std::string time_span) {
   double finest = 0.0;
   for (double level : r.default_levels) finest = std::max(finest, level);
   for (double level : r.extended_levels) finest = std::max(finest, level);
-  c.check_parameters = [check = std::move(c.check_parameters), least_work = std::move(least_work),
-                        time_span = std::move(time_span), finest](const Parameters& p) {
-    if (check) check(p);
+  const std::string statement = fmt::format(
+      "the least work of the motion at N = {:g} cells (the finest --extended level), t_end / (cfl dx / c) steps "
+      "of N cells, within the solver's budget of {:.3g} cell updates",
+      finest, eu::Settings{}.max_cell_updates);
+  require_window(c, statement, [least_work = std::move(least_work), time_span = std::move(time_span),
+                                finest](const Parameters& p) {
     const LeastWork work = least_work(p, static_cast<std::size_t>(finest));
     const double budget = eu::Settings{}.max_cell_updates;
     if (!(work.cell_updates <= budget))
@@ -722,7 +734,7 @@ Case with_work_budget(Case c, LeastWorkAt least_work, std::string time_span) {
                                    "level of --extended; dt <= cfl dx / c), above the solver's budget of {:.3g}; "
                                    "shorten it or raise cfl",
                                    work.t_end, time_span, work.cell_updates, finest, budget));
-  };
+  });
   return c;
 }
 

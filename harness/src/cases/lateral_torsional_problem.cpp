@@ -23,13 +23,20 @@ Parameters lateral_torsional_parameters(const char* weak_axis) {
                          "line density (the mass metric of the nodal rod's eigenproblem)")};
 }
 
-void check_lateral_torsional_parameters(const Parameters& p) {
+namespace {
+void check_prebuckling_rotation(const Parameters& p) {
   const double r0 = parameter_value(p, "stiffness_ratio");
   const double limit = 2e-3 * std::sqrt(parameter_value(p, "EI_weak") / parameter_value(p, "GJ"));
   if (r0 > limit)
     throw InputError("stiffness_ratio", "invalid parameter 'stiffness_ratio' = " + format_value(r0) +
                                             ": must be <= 2e-3 sqrt(EI_weak / GJ) = " + format_value(limit) +
                                             " (the prebuckling rotation r0 sqrt(GJ/EI_weak) must stay below 2e-3)");
+}
+}  // namespace
+
+void require_small_prebuckling_rotation(Case& c) {
+  require_window(c, "stiffness_ratio <= 2e-3 sqrt(EI_weak / GJ) (the prebuckling rotation stays small)",
+                 check_prebuckling_rotation);
 }
 
 std::vector<MetricSpec> lateral_torsional_metrics() {

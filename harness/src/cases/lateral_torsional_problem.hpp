@@ -19,7 +19,7 @@ Parameters lateral_torsional_parameters(const char* weak_axis);
 // The prebuckling rotation at P_cr is about gamma r sqrt(GJ/EI_weak): the linear extrapolation in r
 // and the bracket [0.8, 1.2] P_classical hold while r0 sqrt(GJ/EI_weak) stays below 2e-3 (measured
 // on the nodal rod: 1.5e-3 at the defaults passes; 4e-3 and 1.2e-2 fail). InputError beyond.
-void check_lateral_torsional_parameters(const Parameters& p);
+void require_small_prebuckling_rotation(Case& c);
 
 std::vector<MetricSpec> lateral_torsional_metrics();
 

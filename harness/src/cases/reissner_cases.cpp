@@ -16,6 +16,7 @@
 // H for the Reissner rod (invariants/planar_noether.hpp (R): H = 1/2 EI kappa^2 + n.t
 // + (n.t)^2/(2 EA) + (n.N)^2/(2 GA) - V) is reported along s; its spread is gated.
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <utility>
@@ -153,13 +154,15 @@ Case tension_case(e2d::Scheme scheme) {
                        make_parameter("angle", 0.4, -kPi, kPi, false, false, "rad", "clamp angle (L = 1)")};
   // A stretch 1 + F/EA in (0, 2001]: at F/EA = 4e4 the arcs' Newton fails (line search at load factor
   // 0.98); 2000 passes on both schemes (measured 2026-11-26).
-  c.check_parameters = [](const Parameters& p) {
-    const double F = parameter_value(p, "F"), EA = parameter_value(p, "EA");
-    if (!(F > -EA)) throw InputError("F", "invalid parameter 'F': must be > -EA (stretch 1 + F/EA > 0)");
-    if (!(F <= 2000.0 * EA))
-      throw InputError("F", "invalid parameter 'F' = " + format_value(F) + ": F / EA = " + format_value(F / EA) +
-                                " must be <= 2000 (a stretch of at most 2001, where the levels converge)");
-  };
+  require_window(c, "F / EA in (-1, 2000] (a positive stretch 1 + F/EA; at most 2001, where the levels converge)",
+                 [](const Parameters& p) {
+                   const double F = parameter_value(p, "F"), EA = parameter_value(p, "EA");
+                   if (!(F > -EA)) throw InputError("F", "invalid parameter 'F': must be > -EA (stretch 1 + F/EA > 0)");
+                   if (!(F <= 2000.0 * EA))
+                     throw InputError("F", "invalid parameter 'F' = " + format_value(F) + ": F / EA = " +
+                                               format_value(F / EA) +
+                                               " must be <= 2000 (a stretch of at most 2001, where the levels converge)");
+                 });
   c.info.resolution = {"N", "number of elements", ResolutionScale::Count, {4, 16, 64, 256}, {4, 16, 64, 256, 1024, 4096}};
   c.info.metrics = {
       error_metric("end_displacement", "length", "|r(L) - (L + FL/EA) t| (exact: round-off)", std::nullopt),
@@ -334,11 +337,18 @@ Case cantilever_case(e2d::Scheme scheme) {
   // every gate passes at 0.005, 0.05, 0.5, 5, 20 and at L = 1e3 or 1e-3 with EI scaled; at 50 the
   // arcs' H spread order leaves its window, at 100 six gates fail (the tip curls past the levels'
   // reach); at 1e-4 and below the tip errors reach their round-off floors (orders undefined).
-  c.check_parameters = [](const Parameters& p) {
-    cases::check_load_window(p, "L", 0.005, 20.0,
-                             "the table's 5: beyond 20 the default levels do not reach the asymptotic range, below "
-                             "0.005 the tip errors are at round-off");
-  };
+  cases::require(c, cases::load_window("L", 0.005, 20.0,
+                                        "the table's 5: beyond 20 the default levels do not reach the asymptotic "
+                                        "range, below 0.005 the tip errors are at round-off"));
+  // Strains the levels resolve. The stretch 1 + n.t/EA must stay positive where the rod points
+  // against the load (n.t down to -P): EA / P > 1; measured, both schemes, every gate passes at
+  // P / EA = 0.9 and P / GA = 1.5 together with P L^2/EI in {0.005, 0.5, 5, 20}; at P / GA = 2 and
+  // P L^2/EI = 20 the H spread's order leaves its window (1.85 at P / GA = 12.5, P L^2/EI = 5), and
+  // at P / EA = 2 six gates fail.
+  cases::require(c, cases::ratio_window("EA", "P", 1.1, std::numeric_limits<double>::infinity(),
+                                        "the axial strain P / EA the levels resolve; the stretch vanishes at EA = P"));
+  cases::require(c, cases::ratio_window("GA", "P", 0.7, std::numeric_limits<double>::infinity(),
+                                        "the shear strain P / GA the levels resolve"));
   const CantileverBounds& b = scheme == e2d::Scheme::Polygon ? kPolygonBounds : kArcsBounds;
   const double h = 1.0 / 256;
   for (const char* metric : {"tip_x", "tip_y", "tip_theta", "H_spread"})
@@ -415,14 +425,14 @@ Case critical_case(e2d::Scheme scheme) {
   // GA = EA passes at EA = 15 .. 1e12; at EA = 50, GA = 85 and 100 .. 1e12 there is no post-buckled
   // branch above the critical load; EA = 20, GA = 30 fails alike). It also keeps the bifurcation of
   // the reference, 1 + 4 P_1 (1/GA - 1/EA) >= 1 > 0.
-  c.check_parameters = [](const Parameters& p) {
+  require_window(c, "GA <= EA (beyond, the pitchfork can be subcritical)", [](const Parameters& p) {
     const double EA = parameter_value(p, "EA"), GA = parameter_value(p, "GA");
     if (!(GA <= EA))
       throw InputError("GA", "invalid parameters: the shear stiffness GA = " + format_value(GA) +
                                  " must be <= the axial stiffness EA = " + format_value(EA) +
                                  " (a stiffer shear than axial response can make the pitchfork subcritical, with no "
                                  "post-buckled branch above the critical load for the case to extrapolate from)");
-  };
+  });
   c.info.resolution = {"N", "number of elements", ResolutionScale::Count, {16, 32, 64, 128},
                        {16, 32, 64, 128, 256, 512}};
   c.info.metrics = {error_metric("P_cr", "force", "discrete bifurcation load vs the closed form")};

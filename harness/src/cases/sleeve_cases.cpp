@@ -185,7 +185,11 @@ Case eshelby_case() {
       make_parameter("P", 2.0, 0.0, 1e6, true, false, "force", "dead tip load (downward)"),
       make_parameter("S", 2.0 * 0.7045223208193, 0.0, 1e6, true, false, "force", "inward pull, in (0, P)"),
       make_parameter("rod_length", 3.0, 0.0, 1e6, true, false, "length", "total rod length")};
-  c.check_parameters = check_eshelby_parameters;
+  require_window(c,
+                 fmt::format("S / P in [{:g}, 1), and the equilibrium free length l(P, S, B) < rod_length (the rod "
+                             "stays in the sleeve)",
+                             kEshelbyMinPullRatio),
+                 check_eshelby_parameters);
   c.info.resolution = {"N", "elements on the free arm", ResolutionScale::Count, {32, 64, 128, 256},
                        {32, 64, 128, 256, 512, 1024, 2048}};
   c.info.metrics = {
@@ -351,7 +355,11 @@ Case arm_scale_case() {
       make_parameter("P2", 1.0, 0.0, 1e6, true, false, "force", "weight at the tip of arm 2 (upper exit)"),
       make_parameter("rod_length", 2.0, 0.0, 1e6, true, false, "length", "total rod length L"),
       make_parameter("sleeve_length", 0.2, 0.0, 1e6, true, false, "length", "sleeve length L_s, < L")};
-  c.check_parameters = check_arm_scale_parameters;
+  require_window(c,
+                 fmt::format("sleeve_length < rod_length, max(P1, P2) rod_length^2 / B <= {:g}, |alpha| >= {:g}, and "
+                             "an equilibrium with both arms outside the sleeve",
+                             kArmScaleMaxLoad, kArmScaleMinAngle),
+                 check_arm_scale_parameters);
   c.info.resolution = {"N", "elements per arm", ResolutionScale::Count, {32, 64, 128, 256},
                        {32, 64, 128, 256, 512, 1024, 2048}};
   c.info.metrics = {

@@ -204,20 +204,17 @@ double helix_round_off_unit(const Parameters& p) {
   const double moment = std::abs(parameter_value(p, "twisting_moment")) * parameter_value(p, "radius") / B;
   return std::max({1.0, B / C, C / B}) * (1.0 + moment) * std::max({1.0, turns, 1.0 / (2.0 * kPi * turns)});
 }
-void check_helix_round_off_window(const Parameters& p) {
-  const double B = parameter_value(p, "B");
-  const double turns = helix_turns(p);
-  const double moment = parameter_value(p, "twisting_moment") * parameter_value(p, "radius") / B;
-  if (!(turns >= 1e-3 && turns <= 2.0))
-    throw InputError("L", fmt::format("invalid parameters: the helix makes L sin(pitch_angle) / (2 pi radius) = {} "
-                                      "turns; the case resolves [1e-3, 2] (beyond, Newton from its start may reach "
-                                      "another equilibrium than the helix)",
-                                      format_value(turns)));
-  if (!(std::abs(moment) <= 10.0))
-    throw InputError("twisting_moment", fmt::format("invalid parameters: |twisting_moment| x radius / B = {} must "
-                                                    "be <= 10",
-                                                    format_value(std::abs(moment))));
-  cases::check_ratio_window(p, "C", "B", 0.03, 100.0, "the twist-to-bending ratios Newton reaches the helix at");
+void require_helix_round_off_window(Case& c) {
+  cases::require(c, cases::helix_turns_window(1e-3, 2.0, "beyond, Newton from its start may reach another "
+                                                         "equilibrium than the helix"));
+  require_window(c, "|twisting_moment| x radius / B <= 10", [](const Parameters& p) {
+    const double moment = parameter_value(p, "twisting_moment") * parameter_value(p, "radius") / parameter_value(p, "B");
+    if (!(std::abs(moment) <= 10.0))
+      throw InputError("twisting_moment", fmt::format("invalid parameters: |twisting_moment| x radius / B = {} must "
+                                                      "be <= 10",
+                                                      format_value(std::abs(moment))));
+  });
+  cases::require(c, cases::ratio_window("C", "B", 0.03, 100.0, "the twist-to-bending ratios Newton reaches the helix at"));
 }
 
 LevelOutput run_helix(const Parameters& p, double level) {
@@ -780,7 +777,7 @@ void register_superhelix_cases(Registry& registry) {
          make_parameter("twisting_moment", 0.37, -1e6, 1e6, false, false, "force length", "M_t = m.t")},
         elements({1, 2, 4, 8, 16}, {1, 2, 4, 8, 16, 32, 64}), metrics, gates, run_helix),
         "rod-3d/helix-axial-wrench");
-    c.check_parameters = check_helix_round_off_window;
+    require_helix_round_off_window(c);
     registry.add(std::move(c));
   }
   {
@@ -992,7 +989,9 @@ void register_superhelix_cases(Registry& registry) {
          make_parameter("rhoS", 0.8, 0.0, 1e12, true, false, "mass/length", "line density"),
          make_parameter("rhoI0", 0.07, 0.0, 1e12, true, false, "mass length", "polar mass moment per unit length")},
         elements(levels, {8, 16, 32, 64, 128, 256}), std::move(metrics), std::move(gates), run_modes);
-    c.check_parameters = check_mode_spread;
+    require_window(c, fmt::format("eps (omega_high / omega_min)^2 <= {:g} over the modes the case measures (EI1, EI2, "
+                                  "GJ, rhoS, rhoI0 and L on comparable scales)", kMaxModeRoundOff),
+                   check_mode_spread);
     c.info.group = "rod-3d/modes";
     c.info.method = std::string(kMethod) +
                     "; linearised about the straight state: the full 3N generalised eigenproblem K v = omega^2 M v "
@@ -1060,7 +1059,7 @@ void register_superhelix_cases(Registry& registry) {
     // The swing the levels resolve: t_end sqrt(g / L) <= 3 (L = 0.7; defaults 0.42): at 3.8 (g = 10,
     // t_end = 1) and 4.8 (g = 100, t_end = 0.4) the loss's order leaves its window; 3 passes at g = 20,
     // 50, 100 (measured 2026-11-26).
-    c.check_parameters = [](const Parameters& p) { cases::check_swing_window(p, kEnergyRodLength, 3.0); };
+    cases::require(c, cases::swing_window(kEnergyRodLength, 3.0));
     registry.add(std::move(c));
   }
   {

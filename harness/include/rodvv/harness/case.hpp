@@ -53,6 +53,11 @@ struct Case {
 template <class Kind>
 const Kind& solution_as(const Solution& solution, const char* expected_kind);
 
+// Adds a window on a combination of parameters: its statement to info.parameter_windows (so that
+// `list -v` promises no more than a run accepts) and its check to check_parameters, after any
+// earlier one. The check throws InputError beyond the window.
+void require_window(Case& c, std::string statement, ParameterCheck check);
+
 // Makes a case check solution files: sets solve, measure, and run_level = measure(solve(...)).
 void split_level(Case& c, SolveLevel solve, MeasureSolution measure);
 

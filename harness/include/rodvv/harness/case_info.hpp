@@ -69,6 +69,9 @@ struct CaseInfo {
   std::string citation;   // where the reference comes from
   std::string method;     // the solver and its theoretical order
   std::vector<Parameter> parameters;
+  // Windows on combinations of parameters that a run requires beyond each one's own range ("C / B
+  // in [0.03, 100]"): listed by `rodvv list -v`, enforced by Case::check_parameters (exit 2).
+  std::vector<std::string> parameter_windows;
   Resolution resolution;
   std::vector<MetricSpec> metrics;
 };

@@ -219,10 +219,8 @@ Case plectoneme_case(const std::string& name, double angle, std::vector<double> 
   // The ply is posed in units of h (B = 1e12 with C alike passes), so what shapes it is C/B: measured
   // (2026-11-26, about a minute a run) 0.65 .. 100 pass (the default 0.69); at 0.5 and 0.3 the laws or H
   // leave their gates, at 0.007 and 7.7e11 a level runs out of time or fails.
-  c.check_parameters = [](const Parameters& p) {
-    check_ratio_window(p, "C", "B", 0.65, 100.0, "the twist-to-bending ratios at which the laid ply holds and "
-                                                 "its levels resolve H and the ply's laws");
-  };
+  require(c, ratio_window("C", "B", 0.65, 100.0, "the twist-to-bending ratios at which the laid ply holds and its "
+                                                 "levels resolve H and the ply's laws"));
   return c;
 }
 

@@ -173,10 +173,8 @@ void add_trefoil_nodal(Registry& registry) {
   // shapes it is C/B: measured 0.3 .. 100 pass; at C/B = 0.1 the H deviation's order leaves its window,
   // at 0.007 it is -0.36 and at B = 1e12 (C/B = 1e-12) the knot comes undone. Real rods have C/B =
   // 1/(1 + nu) in [0.67, 1] (isotropic) and about 1.5 (DNA).
-  c.check_parameters = [](const Parameters& p) {
-    check_ratio_window(p, "C", "B", 0.3, 100.0, "the twist-to-bending ratios at which the tied trefoil holds and "
-                                                "its levels resolve H");
-  };
+  require(c, ratio_window("C", "B", 0.3, 100.0, "the twist-to-bending ratios at which the tied trefoil holds and its "
+                                                "levels resolve H"));
   registry.add(std::move(c));
 }
 

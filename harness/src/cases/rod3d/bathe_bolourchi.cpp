@@ -71,10 +71,10 @@ Parameters bathe_bolourchi_parameters() {
           make_parameter("P", 600.0, 0.0, 1e4, true, false, "force", "tip load normal to the plane")};
 }
 
-void check_bathe_bolourchi_parameters(const Parameters& p) {
-  check_load_window(p, "R", 0.5, 40.0,
-                    "the benchmark's 7.2; beyond 40 the default levels do not reach the asymptotic range, below 0.5 "
-                    "the self-convergence and the nodal oracle reach their round-off floors");
+cases::Window bathe_bolourchi_load_window() {
+  return cases::load_window("R", 0.5, 40.0,
+                            "the benchmark's 7.2; beyond 40 the default levels do not reach the asymptotic range, "
+                            "below 0.5 the self-convergence and the nodal oracle reach their round-off floors");
 }
 
 void add_bathe_bolourchi_metrics(LevelOutput& output, const BatheBolourchiTip& tip, const BatheBolourchiTip& finer,
@@ -127,7 +127,7 @@ void add_bathe_bolourchi(Registry& registry) {
       bathe_bolourchi_parameters(),
       element_levels("number of edges (the level also solves 2N)", {8, 16, 32}, {8, 16, 32, 64}),
       bathe_bolourchi_metric_specs(), std::move(gates), run);
-  c.check_parameters = check_bathe_bolourchi_parameters;
+  require(c, bathe_bolourchi_load_window());
   registry.add(std::move(c));
 }
 

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "../case_builder.hpp"
 #include "rodvv/harness/registry.hpp"
 
 namespace rodvv::harness::rod3d_cases {
@@ -27,7 +28,7 @@ Parameters bathe_bolourchi_parameters();
 // with R = 1e-3 or 1e4 (EI scaled); at 60 the nodal rod's self-convergence order is 1.79 on N = 8 ...
 // 32 (pre-asymptotic), at 720 (EI = 8333) 1.49; at 0.1 and 0.01 an order at a round-off floor.
 // InputError naming P otherwise.
-void check_bathe_bolourchi_parameters(const Parameters& p);
+cases::Window bathe_bolourchi_load_window();
 // The tip parts are sized by R (a light load moves the tip by a small fraction of the arc: P = 6 gave
 // relative errors of 0.39 against the displacement itself).
 void add_bathe_bolourchi_metrics(LevelOutput& output, const BatheBolourchiTip& tip, const BatheBolourchiTip& finer,

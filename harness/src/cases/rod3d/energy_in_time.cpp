@@ -183,7 +183,7 @@ void add_energy_in_time(Registry& registry) {
        make_parameter("t_end", 1.0, 0.05, 3.0, false, false, "time", "horizon")},
       {"dt", "time step", ResolutionScale::StepSize, {1e-2, 5e-3, 2.5e-3}, {2e-2, 1e-2, 5e-3, 2.5e-3, 1.25e-3}},
       std::move(metrics), std::move(gates), run);
-  c.check_parameters = [](const Parameters& p) { check_swing_window(p, kSwingLength, 2.5); };
+  require(c, swing_window(kSwingLength, 2.5));
   registry.add(std::move(c));
 }
 

@@ -167,9 +167,7 @@ void add_greenhill(Registry& registry) {
   // and below 1.74 .. 1.84 or no level converges, also on finer levels; 1e4 passes, 1.7e12 fails. The
   // window also keeps the twist the search reaches, 1.25 M_cr L / GJ (M_cr ~ 9 to 13 B / L), below
   // 25 rad, far inside the end rotation the nodal rod takes (rod::kMaxEndRotation, 1000 turns).
-  c.check_parameters = [](const Parameters& p) {
-    check_ratio_window(p, "GJ", "B", 0.65, 1e4, "the torsion-to-bending ratios the levels resolve the critical moments at");
-  };
+  require(c, ratio_window("GJ", "B", 0.65, 1e4, "the torsion-to-bending ratios the levels resolve the critical moments at"));
   registry.add(std::move(c));
 }
 

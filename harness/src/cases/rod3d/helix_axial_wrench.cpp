@@ -107,19 +107,17 @@ LevelOutput run(const Parameters& p, double level) {
 //   solves fail with levels finer than these;
 // - C / B in [0.03, 100]: at 0.007 (C = 0.009) an order leaves its window, at B = 1e12 or C = 1e12 all
 //   levels fail.
-void check_helix_parameters(const Parameters& p) {
-  const double turns = helix_turns(p);
-  const double moment = parameter_value(p, "twisting_moment") * parameter_value(p, "radius") / parameter_value(p, "B");
-  if (!(turns >= 0.015 && turns <= 1.5))
-    throw InputError("L", fmt::format("invalid parameters: the helix makes L sin(pitch_angle) / (2 pi radius) = {} "
-                                      "turns; the levels resolve [0.015, 1.5]",
-                                      format_value(turns)));
-  if (!(moment >= -4.5 && moment <= 5.0))
-    throw InputError("twisting_moment",
-                     fmt::format("invalid parameters: twisting_moment x radius / B = {} must be in [-4.5, 5], where "
-                                 "the levels resolve the helix",
-                                 format_value(moment)));
-  check_ratio_window(p, "C", "B", 0.03, 100.0, "the twist-to-bending ratios the levels resolve the helix at");
+void require_helix_windows(Case& c) {
+  require(c, helix_turns_window(0.015, 1.5, "the turns the levels resolve"));
+  require_window(c, "twisting_moment x radius / B in [-4.5, 5]", [](const Parameters& p) {
+    const double moment = parameter_value(p, "twisting_moment") * parameter_value(p, "radius") / parameter_value(p, "B");
+    if (!(moment >= -4.5 && moment <= 5.0))
+      throw InputError("twisting_moment",
+                       fmt::format("invalid parameters: twisting_moment x radius / B = {} must be in [-4.5, 5], where "
+                                   "the levels resolve the helix",
+                                   format_value(moment)));
+  });
+  require(c, ratio_window("C", "B", 0.03, 100.0, "the twist-to-bending ratios the levels resolve the helix at"));
 }
 
 }  // namespace
@@ -169,7 +167,7 @@ void add_helix_axial_wrench(Registry& registry) {
        make_parameter("L", 3.1, 0.0, 1e3, true, false, "length", "rod length")},
       element_levels("number of edges", {32, 64, 128}, {32, 64, 128, 256}), std::move(metrics),
       std::move(gates), run);
-  c.check_parameters = check_helix_parameters;
+  require_helix_windows(c);
   registry.add(std::move(c));
 }
 

@@ -65,10 +65,8 @@ void add_lateral_torsional(Registry& registry) {
   // And EI_weak / GJ in [0.3, 1e3] on the nodal rod (measured 2026-11-26): at 0.19 and below the critical
   // load's order leaves its window; up to 1.9e3 passes, 1e4 gives order 1.75 (4e4 passes again, 6e4 and
   // 6e11 fail: not monotone, so the window stops at 1e3).
-  c.check_parameters = [](const Parameters& p) {
-    check_lateral_torsional_parameters(p);
-    check_ratio_window(p, "EI_weak", "GJ", 0.3, 1e3, "the bending-to-torsion ratios the levels resolve P_cr at");
-  };
+  require_small_prebuckling_rotation(c);
+  require(c, ratio_window("EI_weak", "GJ", 0.3, 1e3, "the bending-to-torsion ratios the levels resolve P_cr at"));
   registry.add(std::move(c));
 }
 

@@ -81,9 +81,7 @@ void add_michell_ring(Registry& registry) {
   // C / B in [0.6, 1e4] (measured 2026-11-26 on the default levels): at 0.54 the critical twist's order is
   // 1.89, at 0.3 and below 1.72 or no level converges (the error constant grows as the twist softens;
   // finer levels do not rescue 0.3); 1e4 passes, 7.7e11 fails.
-  c.check_parameters = [](const Parameters& p) {
-    check_ratio_window(p, "C", "B", 0.6, 1e4, "the twist-to-bending ratios the levels resolve the critical twist at");
-  };
+  require(c, ratio_window("C", "B", 0.6, 1e4, "the twist-to-bending ratios the levels resolve the critical twist at"));
   registry.add(std::move(c));
 }
 

@@ -196,7 +196,9 @@ void add_modes(Registry& registry) {
        make_parameter("rhoI0", 0.07, 0.0, 1e12, true, false, "mass length", "polar mass moment per unit length")},
       element_levels("number of edges", {8, 16, 32, 64}, {8, 16, 32, 64, 128}), std::move(metrics), std::move(gates),
       run);
-  c.check_parameters = check_frequency_spread;
+  require_window(c, fmt::format("eps (omega_max / omega_min)^2 <= {:g} at N = {:g} (EI1, EI2, GJ, rhoS, rhoI0 and L on "
+                                "comparable scales)", kMaxEigenRoundOff, kFinestDefaultEdges),
+                 check_frequency_spread);
   registry.add(std::move(c));
 }
 

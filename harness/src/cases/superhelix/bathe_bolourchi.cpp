@@ -99,7 +99,7 @@ void add_bathe_bolourchi(Registry& registry) {
       rod3d_cases::bathe_bolourchi_parameters(),
       element_levels("number of elements (the level also solves 2N)", {8, 16, 32}, {8, 16, 32, 64}),
       std::move(metrics), std::move(gates), run);
-  c.check_parameters = rod3d_cases::check_bathe_bolourchi_parameters;
+  cases::require(c, rod3d_cases::bathe_bolourchi_load_window());
   registry.add(std::move(c));
 }
 

@@ -58,7 +58,7 @@ void add_lateral_torsional(Registry& registry) {
       lateral_torsional_parameters("n1"),
       element_levels("number of elements", {8, 16, 32}, {8, 16, 32, 64}), lateral_torsional_metrics(), std::move(gates),
       run);
-  c.check_parameters = check_lateral_torsional_parameters;
+  require_small_prebuckling_rotation(c);
   registry.add(std::move(c));
 }
 
