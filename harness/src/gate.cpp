@@ -19,6 +19,13 @@ GateSpec order_gate(std::string metric, double theoretical_order, std::string ra
   return gate;
 }
 
+GateSpec order_range_gate(std::string metric, double low_order, double high_order, std::string rationale) {
+  GateSpec gate = order_gate(std::move(metric), low_order, std::move(rationale));
+  gate.name = fmt::format("order of {} in [{:g}, {:g}]", gate.metric, low_order, high_order);
+  gate.upper = high_order + kOrderWindowAbove;
+  return gate;
+}
+
 namespace {
 const char* scope_words(GateScope scope) {
   return scope == GateScope::AllLevels ? "at every level" : "at the finest level";

@@ -266,17 +266,17 @@ ArmScaleEquilibrium arm_scale_equilibrium(const ArmScale& scale) {
   }
   const char* method = "arm scale equilibrium (l1)";
   if (!(f_lo < 0.0))
-    throw SolverError(method,
+    throw ArmPulledIn(2, method,
                       std::string(method) + ": no equilibrium with both arms outside the sleeve: arm 2 is "
                           "pulled fully into the sleeve (P1 sin(alpha) >= P2 sin(beta2) even with l1 = 0; "
                           "residual " + format_value(f_lo) + ")",
-                      0, f_lo);
+                      f_lo);
   if (!(f_hi > 0.0))
-    throw SolverError(method,
+    throw ArmPulledIn(1, method,
                       std::string(method) + ": no equilibrium with both arms outside the sleeve: arm 1 is "
                           "pulled fully into the sleeve (P1 sin(beta1) <= -P2 sin(alpha) even with l2 = 0; "
                           "residual " + format_value(f_hi) + ")",
-                      0, f_hi);
+                      f_hi);
   const double l1 = solve_bracketed(method, f, 0.0, free, f_lo, f_hi);
   const double l2 = free - l1;
   const InclinedArmTip t1 = arm_tip(arm1, l1);

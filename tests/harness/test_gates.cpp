@@ -46,6 +46,16 @@ TEST(OrderGate, FailsWhenObservedOrderIsFarAboveTheory) {
   EXPECT_GT(*result.gates[0].measured, 2.5);
 }
 
+// A range gate brackets a mixed-order error: orders 1 to 2 pass, 0.5 and 3 do not.
+TEST(OrderGate, RangeGatePassesInsideTheBracketedOrdersOnly) {
+  const auto gate = order_range_gate("error", 1.0, 2.0, "mixed");
+  EXPECT_EQ(gate.name, "order of error in [1, 2]");
+  EXPECT_DOUBLE_EQ(gate.lower, 0.9);
+  EXPECT_DOUBLE_EQ(gate.upper, 2.5);
+  for (const double order : {1.0, 1.5, 2.0}) EXPECT_TRUE(sweep_with(synthetic_case(order), {gate}).passed()) << order;
+  for (const double order : {0.5, 3.0}) EXPECT_FALSE(sweep_with(synthetic_case(order), {gate}).passed()) << order;
+}
+
 TEST(OrderGate, FailsWithReasonWhenMetricIsUnknown) {
   const auto result = sweep_with(synthetic_case(2.0), {order_gate("no-such-metric", 2.0, "")});
   EXPECT_FALSE(result.gates[0].passed);

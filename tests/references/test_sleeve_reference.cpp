@@ -344,7 +344,8 @@ TEST(SleeveReference, NoEquilibriumIsASolverErrorNamingTheArm) {
   try {
     ref::arm_scale_equilibrium({0.3, 10.0, 1.0, 1.0, 2.0, 0.2});
     ADD_FAILURE() << "no SolverError";
-  } catch (const rodvv::SolverError& e) {
+  } catch (const ref::ArmPulledIn& e) {
+    EXPECT_EQ(e.arm(), 2);
     EXPECT_NE(std::string(e.what()).find("arm 2 is pulled fully into the sleeve"), std::string::npos) << e.what();
     EXPECT_GE(e.residual(), 0.0);
   }
@@ -352,7 +353,8 @@ TEST(SleeveReference, NoEquilibriumIsASolverErrorNamingTheArm) {
   try {
     ref::arm_scale_equilibrium({-0.3, 1.0, 10.0, 1.0, 2.0, 0.2});
     ADD_FAILURE() << "no SolverError";
-  } catch (const rodvv::SolverError& e) {
+  } catch (const ref::ArmPulledIn& e) {
+    EXPECT_EQ(e.arm(), 1);
     EXPECT_NE(std::string(e.what()).find("arm 1 is pulled fully into the sleeve"), std::string::npos) << e.what();
     EXPECT_LE(e.residual(), 0.0);
   }

@@ -254,9 +254,9 @@ void check_arm_scale_parameters(const Parameters& p) {
                                           format_value(alpha), kArmScaleMinAngle));
   try {
     (void)ref::arm_scale_equilibrium({alpha, P1, P2, B, rod_length, parameter_value(p, "sleeve_length")});
-  } catch (const SolverError& error) {
-    // The reference's message says which arm (sleeve.hpp); the user's parameters are named here.
-    const bool arm2_pulled_in = std::string(error.what()).find("arm 2 is pulled") != std::string::npos;
+  } catch (const ref::ArmPulledIn& error) {
+    // The reference says which arm (sleeve.hpp); the user's parameters are named here.
+    const bool arm2_pulled_in = error.arm() == 2;
     throw InputError(arm2_pulled_in ? "P2" : "P1",
                      fmt::format("invalid parameters: no equilibrium with both arms outside the sleeve at P1 = {}, "
                                  "P2 = {}, alpha = {}, B = {}, L = {}: arm {} would be pulled fully into the sleeve "

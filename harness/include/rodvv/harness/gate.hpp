@@ -45,6 +45,9 @@ struct GateSpec {
 };
 
 GateSpec order_gate(std::string metric, double theoretical_order, std::string rationale);
+// For an error that mixes two orders (an O(h) and an O(h^2) part whose weights move with the
+// parameters): the window [low - 0.1, high + 0.5] around the orders the theory brackets.
+GateSpec order_range_gate(std::string metric, double low_order, double high_order, std::string rationale);
 GateSpec upper_bound_gate(std::string metric, double bound, GateScope scope, std::string rationale);
 GateSpec lower_bound_gate(std::string metric, double bound, GateScope scope, std::string rationale);
 // value <= constant * h^order: a measured error constant times the theoretical power of h.

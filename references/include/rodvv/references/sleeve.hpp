@@ -28,6 +28,10 @@
 // Units: any consistent set (P force, B force x length^2, lengths in length, angles in radians).
 // Errors: rodvv::InputError naming the parameter and its range for bad input; rodvv::SolverError
 // (iterations, residual) when a root solve fails or no equilibrium exists.
+#include <string>
+
+#include "rodvv/common/errors.hpp"
+
 namespace rodvv::references {
 
 // ---------------------------------------------------------------------------------------------
@@ -127,7 +131,16 @@ struct ArmScaleEquilibrium {
 // SolverError (iterations 0, residual f at the end) when no equilibrium exists:
 //   f(0) >= 0: arm 2 would be pulled fully into the sleeve (the rod slides towards arm 1);
 //   f(L - sleeve_length) <= 0: arm 1 would be pulled fully into the sleeve;
-// the message says which.
+// thrown as ArmPulledIn, which says which.
+class ArmPulledIn : public SolverError {
+ public:
+  ArmPulledIn(int arm, const std::string& method, const std::string& message, double residual)
+      : SolverError(method, message, 0, residual), arm_(arm) {}
+  int arm() const noexcept { return arm_; }  // 1 or 2: the arm that would be pulled into the sleeve
+
+ private:
+  int arm_;
+};
 ArmScaleEquilibrium arm_scale_equilibrium(const ArmScale& scale);
 
 }  // namespace rodvv::references
