@@ -117,6 +117,9 @@ SweepResult check_solutions(const Case& c, const Parameters& parameters, std::ve
   for (const GateSpec& gate : c.gates) {
     if (gate.kind != GateKind::Order && !gate.relative) {
       result.skipped_gates.push_back(gate.name + ": a bound on rodvv's own solver, not a property of the problem");
+    } else if (gate.measured) {
+      result.skipped_gates.push_back(gate.name + ": an order measured on rodvv's own solver at the case's defaults "
+                                                 "(not derived), not a property of the problem");
     } else if (!measured_anywhere(result.levels, gate.metric)) {
       result.skipped_gates.push_back(gate.name + ": the solutions lack the fields this metric needs");
     } else if (solutions.size() < c.fit_levels) {

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "rodvv/common/errors.hpp"
@@ -95,22 +96,37 @@ TEST(Check, RodvvSolutionsThroughFilesReproduceTheSweepExactly) {
   EXPECT_NE(checked.info.method.find("rodvv check"), std::string::npos);
 }
 
-// The 3-D form: rodvv's nodal rod in a tilted frame, through files; every metric including both
-// forms of H identical.
+// The 3-D form: rodvv's nodal rod through files, the cantilever in a tilted frame and the helix (at
+// a twisting moment other than its default); every metric including both forms of H identical, and
+// the order gates that apply to any solver pass on both.
 TEST(Check, SpatialRodSolutionsThroughFilesReproduceTheSweepExactly) {
-  const Case& c = *default_registry().find("rod3d/mattiasson-2");
-  const Parameters& p = c.info.parameters;
-  const std::vector<double> levels{16, 32, 64};
-  const SweepResult sweep = run_sweep(c, p, levels);
-  const SweepResult checked = check_solutions(c, p, solutions_of(c, p, levels), {});
-  for (std::size_t i = 0; i < levels.size(); ++i) {
-    ASSERT_EQ(checked.levels[i].metrics.size(), sweep.levels[i].metrics.size());
-    EXPECT_TRUE(checked.levels[i].metrics.contains("H_form_difference"));
-    for (const auto& [name, sample] : sweep.levels[i].metrics) {
-      EXPECT_EQ(checked.levels[i].metrics.at(name).computed, sample.computed) << name;
-      EXPECT_EQ(checked.levels[i].metrics.at(name).error, sample.error) << name;
+  for (const auto& [name, levels, twisting_moment] :
+       {std::tuple{"rod3d/mattiasson-2", std::vector<double>{32, 64, 128}, 0.0},
+        std::tuple{"rod3d/helix-axial-wrench", std::vector<double>{32, 64, 128}, -0.8}}) {
+    const Case& c = *default_registry().find(name);
+    Parameters p = c.info.parameters;
+    for (auto& parameter : p)
+      if (parameter.name == "twisting_moment") parameter.value = twisting_moment;
+    const SweepResult sweep = run_sweep(c, p, levels);
+    const SweepResult checked = check_solutions(c, p, solutions_of(c, p, levels), {});
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+      ASSERT_EQ(checked.levels[i].metrics.size(), sweep.levels[i].metrics.size()) << name;
+      EXPECT_TRUE(checked.levels[i].metrics.contains("H_form_difference")) << name;
+      for (const auto& [metric, sample] : sweep.levels[i].metrics) {
+        EXPECT_EQ(checked.levels[i].metrics.at(metric).computed, sample.computed) << name << " " << metric;
+        EXPECT_EQ(checked.levels[i].metrics.at(metric).error, sample.error) << name << " " << metric;
+      }
     }
+    for (const auto& gate : checked.gates) EXPECT_TRUE(gate.passed) << name << ": " << gate.name << ": " << gate.reason;
   }
+  // The helix's H spread falls at fourth order on rodvv's rod at its defaults, a superconvergence
+  // measured, not derived: not asked of another solver.
+  const Case& helix = *default_registry().find("rod3d/helix-axial-wrench");
+  const SweepResult checked =
+      check_solutions(helix, helix.info.parameters, solutions_of(helix, helix.info.parameters, {32, 64, 128}), {});
+  EXPECT_TRUE(std::ranges::any_of(checked.skipped_gates, [](const std::string& skipped) {
+    return skipped.starts_with("order of H_spread = 4: an order measured on rodvv's own solver");
+  }));
 }
 
 // The column's midspan values need a node at s = L/2: an odd N is refused, not measured off-centre.
