@@ -102,7 +102,8 @@ TEST(Check, RodvvSolutionsThroughFilesReproduceTheSweepExactly) {
 TEST(Check, SpatialRodSolutionsThroughFilesReproduceTheSweepExactly) {
   for (const auto& [name, levels, twisting_moment] :
        {std::tuple{"rod3d/mattiasson-2", std::vector<double>{32, 64, 128}, 0.0},
-        std::tuple{"rod3d/helix-axial-wrench", std::vector<double>{32, 64, 128}, -0.8}}) {
+        std::tuple{"rod3d/helix-axial-wrench", std::vector<double>{32, 64, 128}, -0.8},
+        std::tuple{"rod3d/heavy-cantilever", std::vector<double>{32, 64, 128}, 0.0}}) {
     const Case& c = *default_registry().find(name);
     Parameters p = c.info.parameters;
     for (auto& parameter : p)

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <variant>
 
 #include <Eigen/Geometry>
 
@@ -64,6 +65,28 @@ TEST(Rod3dGatesHaveTeeth, TripledErrorFailsTheMagnitudeGate) {
   };
   const auto result = run_at_default_levels(wrong);
   EXPECT_FALSE(result.passed());
+}
+
+// rod3d/heavy-cantilever: the internal force varies along the rod (its weight), so a vertex force taken
+// from one adjacent edge instead of the mean of both (an O(h) slip in the solution's forces, emulated
+// here by moving each station's force half way to the next one's) turns H's order red; the shape gates
+// alone cannot see it.
+TEST(Rod3dGatesHaveTeeth, OneSidedVertexForcesAreSeenUnderWeight) {
+  Case wrong = named("rod3d/heavy-cantilever");
+  const SolveLevel solve = wrong.solve;
+  const MeasureSolution measure = wrong.measure;
+  wrong.run_level = [solve, measure](const Parameters& p, double level) {
+    rodvv::Solution solution = solve(p, level);
+    auto& rod = std::get<rodvv::SpatialRodSolution>(solution);
+    for (std::size_t i = 0; i + 1 < rod.force_n.size(); ++i) rod.force_n[i] += 0.5 * (rod.force_n[i + 1] - rod.force_n[i]);
+    return measure(p, level, solution);
+  };
+  const auto result = run_at_default_levels(wrong);
+  EXPECT_FALSE(result.passed());
+  for (const auto& gate : result.gates)
+    if (gate.metric == "tip_w" || gate.metric == "tip_u") {
+      EXPECT_TRUE(gate.passed) << gate.name;
+    }
 }
 
 // The Mattiasson reference at a stiffness perturbed by 1e-3 is off by more than the bound at N = 128:

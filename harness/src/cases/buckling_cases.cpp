@@ -280,8 +280,11 @@ void register_buckling_cases(Registry& registry) {
       c.info.method = scheme_text(scheme) +
                       "; K_b, K_g and the constraint Jacobian from the production Hessian of the discrete "
                       "Lagrangian, null-space reduction, dense symmetric-definite eigen solve";
-      c.info.parameters = {make_parameter("L", 1.0, 0.0, 1e6, true, false, "length", "rod length"),
-                           make_parameter("EI", 1.0, 0.0, 1e12, true, false, "force length^2", "bending stiffness")};
+      // Non-unit, unequal scales (issue 13, class 3): a load unit EI/L instead of EI/L^2 in the
+      // solver passed every case at L = 1 (tests/mutation: elastica2d-buckling-load-unit-over-length).
+      // The errors are relative, so the bounds measured at L = EI = 1 hold to round-off.
+      c.info.parameters = {make_parameter("L", 2.3, 0.0, 1e6, true, false, "length", "rod length"),
+                           make_parameter("EI", 0.7, 0.0, 1e12, true, false, "force length^2", "bending stiffness")};
       c.info.resolution = {"N", "number of elements", ResolutionScale::Count, levels, extended};
       c.info.metrics = {load_metric(1), load_metric(2), shape_metric(supports, 1), shape_metric(supports, 2)};
       c.gates = gates_for(scheme, supports, 1.0 / levels.back());

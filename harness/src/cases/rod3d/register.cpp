@@ -13,6 +13,7 @@ const char* const kMethod =
 void register_rod3d_cases(Registry& registry) {
   rod3d_cases::add_helix_axial_wrench(registry);
   rod3d_cases::add_mattiasson(registry);
+  rod3d_cases::add_heavy_cantilever(registry);
   rod3d_cases::add_roll_up(registry);
   rod3d_cases::add_modes(registry);
   rod3d_cases::add_energy_in_time(registry);

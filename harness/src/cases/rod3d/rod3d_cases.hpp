@@ -10,6 +10,7 @@ extern const char* const kMethod;
 
 void add_helix_axial_wrench(Registry& registry);  // uniform helix held by an axial wrench
 void add_mattiasson(Registry& registry);          // Mattiasson cantilever in a tilted 3-D frame
+void add_heavy_cantilever(Registry& registry);    // cantilever under its own weight in a tilted 3-D frame
 void add_roll_up(Registry& registry);             // end-moment roll-up in a tilted 3-D frame
 void add_modes(Registry& registry);               // bending and torsional frequencies of a cantilever
 void add_energy_in_time(Registry& registry);      // energy of implicit Euler and midpoint on a swinging rod
