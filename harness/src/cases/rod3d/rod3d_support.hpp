@@ -1,11 +1,14 @@
 #pragma once
 // What the rod3d case files share beyond the case builder: a rod state laid on a given curve with
-// given material frames.
+// given material frames, and the round-off gate of a rod loaded in a plane.
 #include <functional>
+#include <limits>
+#include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
 
+#include "rodvv/harness/gate.hpp"
 #include "rodvv/solvers/rod3d/model.hpp"
 #include "rodvv/solvers/rod3d/state.hpp"
 
@@ -33,6 +36,16 @@ inline solvers::rod3d::RodState state_on_curve(const solvers::rod3d::RodModel& m
     state.angle[j] = rod::signed_angle(state.reference_director[j], m1_at_edge(j), rod::edge_tangent(state, j));
   if (rod::is_inextensible(model)) state.multiplier.assign(model.elements, 0.0);
   return state;
+}
+
+// A rod loaded in a plane (tilted in space) leaves it by round-off only: the vertex forces carry ~N^3 eps
+// and the softest out-of-plane mode has a stiffness ~1/N, so the drift goes as eps N^4 (h = 1/N); gated
+// at every level, like a measured bound (mattiasson.cpp has the measurements).
+inline GateSpec out_of_plane_round_off_gate(std::string rationale) {
+  GateSpec gate = scaled_upper_bound_gate("out_of_plane", std::numeric_limits<double>::epsilon(), -4.0,
+                                          GateScope::AllLevels, std::move(rationale));
+  gate.measured = true;
+  return gate;
 }
 
 }  // namespace rodvv::harness::rod3d_cases
