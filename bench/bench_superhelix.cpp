@@ -10,7 +10,12 @@
 //  - BM_StepRecursiveMovingRoot: the recursive step with a translating, spinning-up root (root_motion.hpp).
 //  - BM_ClothoidStepRecursive / BM_ClothoidStepDense: the super-clothoid step by the O(N) nodal-strain
 //    recursion (N = 16 .. 1024) and by dense assembly + LDL^T (N = 16 .. 256).
-//  - BM_Statics: the heavy-cantilever static solve (Newton with a finite-difference Jacobian), N = 8 .. 64.
+//  - BM_Statics: the heavy-cantilever static solve (Newton with the exact Jacobian), N = 8 .. 256
+//    (issue 17's target: under 50 ms at N = 256).
+//  - BM_JacobianExact / BM_JacobianCentralDifference: the static Jacobian of the same state, exact
+//    (load_stiffness.hpp, O(N^2)) and by central differences of the residual (6N residuals of O(N):
+//    what Newton used before).
+//  - BM_InverseStatics: q0, load stiffness and the generalised eigenvalue (dense, O(N^3)).
 // The fit exponent over N = 16 .. 1024 (issue: <= 1.1) is the least-squares slope of log(cpu time)
 // against log N of the BM_StepRecursive rows (e.g. from --benchmark_format=json).
 // The state is a curved, moving rod under gravity (set up outside the timed loop), with the model's
@@ -21,6 +26,7 @@
 
 #include "rodvv/solvers/superhelix/clothoid_dynamics.hpp"
 #include "rodvv/solvers/superhelix/dynamics.hpp"
+#include "rodvv/solvers/superhelix/inverse_statics.hpp"
 #include "rodvv/solvers/superhelix/root_motion.hpp"
 #include "rodvv/solvers/superhelix/statics.hpp"
 
@@ -111,13 +117,53 @@ void BM_Statics(benchmark::State& bench) {
   bench.counters["newton_iterations"] = static_cast<double>(iterations);
 }
 
+// The heavy cantilever's equilibrium at N (shared by the Jacobian and inverse benchmarks).
+rodvv::VecX heavy_equilibrium(const sh::RodModel& model) {
+  sh::StaticOptions options;
+  options.load_steps = 2;
+  return sh::solve_static(model, options).q;
+}
+
+sh::RodModel heavy_model(std::size_t n) {
+  sh::RodModel model = model_of(n);
+  model.gravity = Vec3(0.0, 0.0, -3.0);
+  return model;
+}
+
+void BM_JacobianExact(benchmark::State& bench) {
+  const sh::RodModel model = heavy_model(static_cast<std::size_t>(bench.range(0)));
+  const rodvv::VecX q = heavy_equilibrium(model);
+  for (auto _ : bench) benchmark::DoNotOptimize(sh::static_jacobian(model, q).data());
+  bench.SetComplexityN(bench.range(0));
+}
+
+void BM_JacobianCentralDifference(benchmark::State& bench) {
+  const sh::RodModel model = heavy_model(static_cast<std::size_t>(bench.range(0)));
+  const rodvv::VecX q = heavy_equilibrium(model);
+  const sh::StaticResidual residual = [&model](const rodvv::VecX& x, double lambda) {
+    return sh::static_residual(model, x, lambda);
+  };
+  for (auto _ : bench) benchmark::DoNotOptimize(sh::central_difference_jacobian(residual, q, 1.0, model.length).data());
+  bench.SetComplexityN(bench.range(0));
+}
+
+void BM_InverseStatics(benchmark::State& bench) {
+  const sh::RodModel model = heavy_model(static_cast<std::size_t>(bench.range(0)));
+  const rodvv::VecX q = heavy_equilibrium(model);
+  for (auto _ : bench) benchmark::DoNotOptimize(sh::inverse_statics(model, q).critical_stiffness_factor);
+  bench.SetComplexityN(bench.range(0));
+}
+
 BENCHMARK(BM_StepRecursive)->RangeMultiplier(2)->Range(16, 1024)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
 BENCHMARK(BM_StepDense)->RangeMultiplier(2)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
 BENCHMARK(BM_StepRecursiveTranslationalOnly)->RangeMultiplier(4)->Range(16, 1024)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity(benchmark::oN);
 BENCHMARK(BM_StepRecursiveMovingRoot)->RangeMultiplier(4)->Range(16, 1024)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity(benchmark::oN);
 BENCHMARK(BM_ClothoidStepRecursive)->RangeMultiplier(2)->Range(16, 1024)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
 BENCHMARK(BM_ClothoidStepDense)->RangeMultiplier(2)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
-BENCHMARK(BM_Statics)->RangeMultiplier(2)->Range(8, 64)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
+BENCHMARK(BM_Statics)->RangeMultiplier(2)->Range(8, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
+BENCHMARK(BM_JacobianExact)->RangeMultiplier(4)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
+BENCHMARK(BM_JacobianCentralDifference)->RangeMultiplier(4)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
+BENCHMARK(BM_InverseStatics)->RangeMultiplier(4)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 
 }  // namespace
 

@@ -65,6 +65,7 @@ const Registry& default_registry() {
     register_sleeve_cases(r);
     register_rod3d_cases(r);
     register_knot_cases(r);
+    register_inverse_cases(r);
     return r;
   }();
   return registry;

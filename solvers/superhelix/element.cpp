@@ -192,4 +192,36 @@ ElementEndRates element_end_rates(const Vec3& q, const Vec3& qdot, double sigma)
   return out;
 }
 
+ElementSecondDerivatives element_second_derivatives(const Vec3& q, double sigma) {
+  const double s2 = sigma * sigma, s3 = s2 * sigma, s4 = s2 * s2, s5 = s4 * sigma;
+  const HelixCoefficients c = helix_coefficients(s2 * q.squaredNorm());
+  const HelixCoefficientRates r = helix_coefficient_rates(s2 * q.squaredNorm());
+  const Mat3 X = skew(q);
+  const Mat3 X2 = X * X;
+  const Vec3 e0 = Vec3::UnitX();
+  const Vec3 Xe0 = q.cross(e0), X2e0 = q.cross(Xe0);
+  ElementSecondDerivatives out;
+  for (int j = 0; j < 3; ++j) {
+    const Vec3 ej = Vec3::Unit(j);
+    const Mat3 Ej = skew(ej);
+    // dG/dq_j = sigma^4 g1 q_j X + sigma^2 f1 [e_j]x + sigma^5 g2 q_j X^2 + sigma^3 f2 ([e_j]x X + X [e_j]x)
+    out.frame_rate[j] = (s4 * c.g1 * q[j]) * X + (s2 * c.f1) * Ej + (s5 * c.g2 * q[j]) * X2 + (s3 * c.f2) * (Ej * X + X * Ej);
+    const Vec3 ej_x_e0 = ej.cross(e0);
+    const Vec3 mixed_j = ej.cross(Xe0) + q.cross(ej_x_e0);  // ([e_j]x X + X [e_j]x) e0
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 ek = Vec3::Unit(k);
+      const Vec3 ek_x_e0 = ek.cross(e0);
+      const Vec3 mixed_k = ek.cross(Xe0) + q.cross(ek_x_e0);  // d(X^2 e0)/dq_k
+      const double delta = j == k ? 1.0 : 0.0;
+      // d/dq_k of each of the four terms of dG/dq_j e0:
+      out.offset_hessian[j].col(k) =
+          s4 * ((2.0 * s2 * r.dg1 * q[k] * q[j] + c.g1 * delta) * Xe0 + (c.g1 * q[j]) * ek_x_e0) +
+          (s4 * c.g1 * q[k]) * ej_x_e0 +
+          s5 * ((2.0 * s2 * r.dg2 * q[k] * q[j] + c.g2 * delta) * X2e0 + (c.g2 * q[j]) * mixed_k) +
+          (s5 * c.g2 * q[k]) * mixed_j + (s3 * c.f2) * (ej.cross(ek_x_e0) + ek.cross(ej_x_e0));
+    }
+  }
+  return out;
+}
+
 }  // namespace rodvv::solvers::superhelix

@@ -33,7 +33,7 @@ MatX central_difference_jacobian(const StaticResidual& residual, const VecX& q, 
 
 StaticResult newton_load_stepping(const StaticResidual& static_residual, const VecX& q0,
                                   const NewtonScales& scales, const StaticOptions& options,
-                                  const std::string& method) {
+                                  const std::string& method, const StaticJacobian& jacobian) {
   require_at_least("load_steps", options.load_steps, 1);
   require_at_least("max_iterations", options.max_iterations, 1);
   require_open_interval("tolerance", options.tolerance, 0.0, 1.0);
@@ -59,7 +59,8 @@ StaticResult newton_load_stepping(const StaticResidual& static_residual, const V
         break;
       }
       ++result.iterations;
-      const MatX J = central_difference_jacobian(static_residual, result.q, lambda, length);
+      const MatX J = jacobian ? jacobian(result.q, lambda)
+                              : central_difference_jacobian(static_residual, result.q, lambda, length);
       const VecX direction = -J.partialPivLu().solve(residual);
       if (!direction.allFinite()) throw SolverError(method, "singular Jacobian", result.iterations, norm);
       // backtracking on 1/2 |r|^2

@@ -1,6 +1,7 @@
 #include "rodvv/solvers/superhelix/statics.hpp"
 
 #include "rodvv/solvers/superhelix/kinematics.hpp"
+#include "rodvv/solvers/superhelix/load_stiffness.hpp"
 #include "rodvv/solvers/superhelix/loads.hpp"
 
 namespace rodvv::solvers::superhelix {
@@ -12,10 +13,10 @@ VecX static_residual(const RodModel& model, const VecX& q, double load_factor) {
 }
 
 MatX static_jacobian(const RodModel& model, const VecX& q, double load_factor) {
-  const StaticResidual residual = [&model](const VecX& x, double lambda) {
-    return static_residual(model, x, lambda);
-  };
-  return central_difference_jacobian(residual, q, load_factor, model.length);
+  const Kinematics kinematics(model, q);
+  MatX J = -load_stiffness(model, kinematics, load_factor);
+  J.diagonal() += generalised_stiffness(model);
+  return J;
 }
 
 StaticResult solve_static(const RodModel& model, const StaticOptions& options) {
@@ -28,7 +29,8 @@ StaticResult solve_static(const RodModel& model, const StaticOptions& options) {
   const StaticResidual residual = [&model](const VecX& x, double lambda) {
     return static_residual(model, x, lambda);
   };
-  return newton_load_stepping(residual, q0, scales, options, "superhelix Newton");
+  const StaticJacobian jacobian = [&model](const VecX& x, double lambda) { return static_jacobian(model, x, lambda); };
+  return newton_load_stepping(residual, q0, scales, options, "superhelix Newton", jacobian);
 }
 
 }  // namespace rodvv::solvers::superhelix

@@ -66,7 +66,7 @@ namespace rodvv::harness {
 namespace superhelix_cases {
 const char* const kMethod =
     "Super-Helix (Bertails et al. 2006): piecewise-constant twist and curvatures, closed-form helical "
-    "elements (singularity-free exponential form); statics by Newton (finite-difference Jacobian, "
+    "elements (singularity-free exponential form); statics by Newton (exact Jacobian, "
     "line search, load stepping); Gauss-Legendre mass quadrature (4 points per element) of the translational "
     "and rotational inertia of the cross-sections";
 }  // namespace superhelix_cases

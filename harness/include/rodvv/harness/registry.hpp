@@ -38,5 +38,6 @@ void register_contact_cases(Registry& registry);  // elastica-contact/*: cavity,
 void register_sleeve_cases(Registry& registry);  // sleeve/*: Eshelby-like force, elastica arm scale
 void register_rod3d_cases(Registry& registry);   // rod3d/*: the nodal 3-D rod (discrete elastic rod)
 void register_knot_cases(Registry& registry);    // knot/*: knots tied in rods with self-contact
+void register_inverse_cases(Registry& registry);  // inverse/*: Super-Helix inverse statics
 
 }  // namespace rodvv::harness

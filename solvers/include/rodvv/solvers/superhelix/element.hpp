@@ -75,6 +75,24 @@ struct ElementEndRates {
 };
 ElementEndRates element_end_rates(const Vec3& q, const Vec3& qdot, double sigma);
 
+// Second derivatives, for the load stiffness dF/dq of the statics (load_stiffness.hpp) and the
+// Hessian of the potential (inverse_statics.hpp, stability.hpp), in the element's base frame:
+//   frame_rate[j]       = dG/dq_j (column i = d(G e_i)/dq_j: the rate of the rotation Jacobian
+//                          Theta_i = G e_i, §1.3), from the dG/dq_j formula above;
+//   offset_hessian[j]   : column k = d2(G e0)/dq_j dq_k (symmetric in j, k), by differentiating the
+//                          dG/dq_j e0 formula once more with d(x^2)/dq_k = 2 sigma^2 q_k,
+//                          df1/dq_k = sigma^2 g1 q_k, df2/dq_k = sigma^2 g2 q_k,
+//                          dg1/dq_k = 2 sigma^2 dg1 q_k, dg2/dq_k = 2 sigma^2 dg2 q_k (dg from
+//                          helix_coefficient_rates).
+// Exact (no step size); tests/solvers/test_superhelix_load_stiffness.cpp checks both against
+// central differences of element_maps and against the directional second derivative
+// (element_point_rates().bias = qdot^T offset_hessian qdot).
+struct ElementSecondDerivatives {
+  Mat3 frame_rate[3];
+  Mat3 offset_hessian[3];
+};
+ElementSecondDerivatives element_second_derivatives(const Vec3& q, double sigma);
+
 inline Mat3 skew(const Vec3& a) {
   Mat3 m;
   m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;

@@ -3,8 +3,9 @@
 // shared by the Super-Helix (statics.hpp) and the super-clothoid (clothoid_statics.hpp) rods: only
 // the residual differs between the two element types.
 //
-// Jacobian dr/dq by central differences of the residual (step cbrt(eps) max(|q_j|, 1/L), truncation
-// error ~1e-11 relative), LU with partial pivoting, backtracking line search on 1/2 |r|^2 (Armijo
+// Jacobian dr/dq: exact when the caller passes one (the Super-Helix, load_stiffness.hpp), otherwise
+// by central differences of the residual (step cbrt(eps) max(|q_j|, 1/L), truncation error ~1e-11
+// relative: the super-clothoid), LU with partial pivoting, backtracking line search on 1/2 |r|^2 (Armijo
 // 1e-4, step halved down to 2^-30). Load stepping: lambda_k = k / load_steps, each step starting
 // from the previous one. Convergence: |r|_inf <= tolerance * scale, scale = max(k_max |q|_inf,
 // k_max / L, load_scale), or a Newton step at round-off (|dq|_inf L <= 64 eps (1 + |q|_inf L)).
@@ -31,6 +32,8 @@ struct StaticResult {
 };
 
 using StaticResidual = std::function<VecX(const VecX& q, double load_factor)>;
+// dr/dq at (q, load_factor); empty: central differences of the residual.
+using StaticJacobian = std::function<MatX(const VecX& q, double load_factor)>;
 
 // Scales of the convergence test (see above).
 struct NewtonScales {
@@ -44,6 +47,7 @@ MatX central_difference_jacobian(const StaticResidual& residual, const VecX& q, 
 
 // Validates the options (InputError names load_steps / max_iterations / tolerance / initial_q).
 StaticResult newton_load_stepping(const StaticResidual& residual, const VecX& q0, const NewtonScales& scales,
-                                  const StaticOptions& options, const std::string& method);
+                                  const StaticOptions& options, const std::string& method,
+                                  const StaticJacobian& jacobian = {});
 
 }  // namespace rodvv::solvers::superhelix

@@ -5,11 +5,11 @@
 // < 0: unstable; it crosses zero at a bifurcation (buckling). By Sylvester's law of inertia the
 // scaling does not change its sign; it makes the eigenvalue O(1) whatever the stiffnesses.
 //
-// J is the central-difference Jacobian of statics.hpp (truncation ~1e-11 relative), so it is
-// symmetric only to that level even for conservative loads (gravity, a dead end force). A dead end
-// moment is not conservative (Ziegler) and its load stiffness is unsymmetric: if the relative
-// asymmetry max |J - J^T| / max |J| exceeds symmetry_tolerance (1e-7: four decades above the
-// difference noise), InputError ("end_moment"): a non-self-adjoint problem has no such criterion.
+// J is the exact Jacobian of statics.hpp (load_stiffness.hpp), symmetric to round-off for
+// conservative loads (gravity, a dead end force). A dead end moment is not conservative (Ziegler)
+// and its load stiffness is unsymmetric: if the relative asymmetry max |J - J^T| / max |J| exceeds
+// symmetry_tolerance (1e-7, kept from the central-difference Jacobian this replaced, whose noise was
+// ~1e-11), InputError ("end_moment"): a non-self-adjoint problem has no such criterion.
 // The state must be an equilibrium: the scaled residual max |r| / max |K (q - q0)|, |F| must be below
 // equilibrium_tolerance (InputError "q" otherwise). Dense, O(N^3).
 #include "rodvv/common/eigen_types.hpp"

@@ -9,15 +9,16 @@
 // a dead end moment is not conservative for general 3-D rotations (Ziegler), so the Jacobian is
 // not symmetric in general and Newton works on r itself.
 //
-// Newton (newton.hpp, shared with the super-clothoid): Jacobian dr/dq by central differences of the O(N) residual (3N columns; step
-// cbrt(eps) max(|q_j|, 1/L), truncation error ~1e-11 relative, so Newton converges linearly with a
-// contraction ~1e-10 per iteration, indistinguishable from quadratic here), LU with partial
-// pivoting, backtracking line search on 1/2 |r|^2 (Armijo 1e-4, step halved down to 2^-30).
+// Newton (newton.hpp, shared with the super-clothoid): the exact Jacobian dr/dq = K - lambda dF_ext/dq
+// (load_stiffness.hpp, O(N^2); it replaced central differences of the residual, whose ~1e-11
+// truncation made Newton linear with a contraction ~1e-10), LU with partial pivoting, backtracking
+// line search on 1/2 |r|^2 (Armijo 1e-4, step halved down to 2^-30).
 // Load stepping: loads scaled by lambda_k = k / load_steps, each step starting from the previous.
 // Convergence: |r|_inf <= tolerance * scale, scale = max(|K|_inf |q|_inf, |K|_inf / L,
 // |F_ext(q0)|_inf), or a Newton step at round-off (|dq|_inf <= 64 eps (1 + |q|_inf) L).
 // Failure: rodvv::SolverError (iterations, residual). Cost per Newton iteration: O(N^2) for the
 // Jacobian and O(N^3) for the dense LU.
+// static_jacobian: exact, symmetric for gravity and a dead end force (to round-off).
 #include <cstddef>
 
 #include "rodvv/common/eigen_types.hpp"

@@ -1,0 +1,12 @@
+#pragma once
+// inverse/*: inverse statics of the Super-Helix (solvers/superhelix/inverse_statics.hpp; ALGORITHMS.md
+// §3): the rest shape that makes a given shape a (stable) equilibrium. One problem per file here;
+// register.cpp lists them.
+#include "rodvv/harness/registry.hpp"
+
+namespace rodvv::harness::inverse_cases {
+
+void add_round_trip(Registry& registry);           // round-trip-planar, round-trip-3d
+void add_stability_threshold(Registry& registry);  // Greenhill's heavy column, statics and dynamics
+
+}  // namespace rodvv::harness::inverse_cases

@@ -1,0 +1,11 @@
+// inverse/*: inverse statics. One file per problem in this folder; this one lists them.
+#include "inverse_cases.hpp"
+
+namespace rodvv::harness {
+
+void register_inverse_cases(Registry& registry) {
+  inverse_cases::add_round_trip(registry);
+  inverse_cases::add_stability_threshold(registry);
+}
+
+}  // namespace rodvv::harness

@@ -1,0 +1,81 @@
+#include "rodvv/solvers/superhelix/inverse_statics.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include <Eigen/Eigenvalues>
+
+#include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
+#include "rodvv/solvers/superhelix/kinematics.hpp"
+#include "rodvv/solvers/superhelix/load_stiffness.hpp"
+#include "rodvv/solvers/superhelix/loads.hpp"
+
+namespace rodvv::solvers::superhelix {
+
+namespace {
+constexpr double kSymmetryTolerance = 1e-7;  // as stability.hpp
+
+void check_configuration(const RodModel& model, const VecX& q) {
+  validate(model);
+  if (q.size() != Eigen::Index(dof_count(model)))
+    throw InputError("q", "invalid parameter 'q': must hold 3 N = " + std::to_string(dof_count(model)) +
+                              " values, got " + std::to_string(q.size()));
+  if (!q.allFinite()) throw InputError("q", "invalid parameter 'q': must be finite");
+}
+}  // namespace
+
+VecX natural_strain_for(const RodModel& model, const VecX& q) {
+  check_configuration(model, q);
+  const Kinematics kinematics(model, q);
+  return q - external_generalised_force(model, kinematics).cwiseQuotient(generalised_stiffness(model));
+}
+
+InverseStatics inverse_statics(const RodModel& model, const VecX& q) {
+  check_configuration(model, q);
+  const Kinematics kinematics(model, q);
+  const VecX k = generalised_stiffness(model);
+  const VecX force = external_generalised_force(model, kinematics);
+  InverseStatics result;
+  result.natural_strain = q - force.cwiseQuotient(k);
+  const VecX elastic = k.cwiseProduct(q - result.natural_strain);
+  const double scale = std::max({(k.cwiseProduct(q)).lpNorm<Eigen::Infinity>(), force.lpNorm<Eigen::Infinity>(),
+                                 k.maxCoeff() / model.length});
+  result.residual = (elastic - force).lpNorm<Eigen::Infinity>() / scale;
+
+  const MatX D = load_stiffness(model, kinematics);
+  const double largest = D.cwiseAbs().maxCoeff();
+  const double asymmetry = largest > 0.0 ? (D - D.transpose()).cwiseAbs().maxCoeff() / largest : 0.0;
+  if (!(asymmetry <= kSymmetryTolerance))
+    throw InputError("end_moment", "invalid parameter 'end_moment': the load stiffness is not symmetric (relative "
+                                   "asymmetry " + format_value(asymmetry) + " > " + format_value(kSymmetryTolerance) +
+                                       ", a dead end moment): no stability criterion; natural_strain_for gives q0");
+  const VecX w = k.cwiseSqrt().cwiseInverse();
+  const MatX scaled = w.asDiagonal() * (0.5 * (D + D.transpose())) * w.asDiagonal();
+  Eigen::SelfAdjointEigenSolver<MatX> solver(scaled, Eigen::EigenvaluesOnly);
+  if (solver.info() != Eigen::Success)
+    throw SolverError("superhelix inverse statics (dense symmetric eigensolver)", "eigenvalue iteration did not converge",
+                      0, 0.0);
+  const double lambda_max = solver.eigenvalues()[solver.eigenvalues().size() - 1];
+  result.critical_stiffness_factor = std::max(lambda_max, 0.0);
+  result.stability_eigenvalue = 1.0 - lambda_max;
+  return result;
+}
+
+RodModel model_at_rest_in(const RodModel& model, const VecX& q, double stiffness_factor) {
+  require_positive("stiffness_factor", stiffness_factor);
+  RodModel scaled = model;
+  scaled.stiffness *= stiffness_factor;
+  const VecX q0 = natural_strain_for(scaled, q);
+  scaled.natural_strain_per_element.resize(model.elements);
+  for (std::size_t e = 0; e < model.elements; ++e) scaled.natural_strain_per_element[e] = q0.segment<3>(Eigen::Index(3 * e));
+  return scaled;
+}
+
+RodModel stable_rest_model(const RodModel& model, const VecX& q, double margin) {
+  require_open_interval("margin", margin, 0.0, 10.0);
+  const double factor = std::max(1.0, (1.0 + margin) * inverse_statics(model, q).critical_stiffness_factor);
+  return model_at_rest_in(model, q, factor);
+}
+
+}  // namespace rodvv::solvers::superhelix
