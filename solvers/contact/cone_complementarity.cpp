@@ -1,0 +1,190 @@
+#include "rodvv/solvers/contact/cone_complementarity.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include <boost/math/tools/toms748_solve.hpp>
+#include <Eigen/Cholesky>
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
+#include "rodvv/common/errors.hpp"
+#include "rodvv/common/time_budget.hpp"
+#include "rodvv/common/validation.hpp"
+
+namespace rodvv::solvers::contact {
+
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+constexpr int kPhiIntervals = 256;
+
+double tangential_norm(const Vec3& x) { return std::hypot(x[1], x[2]); }
+
+// The velocity the cone law pairs with r: u + mu |u_T| e_N (Coulomb, De Saxce) or u (SOC).
+Vec3 paired_velocity(const Vec3& u, double mu, ConeLaw law) {
+  Vec3 v = u;
+  if (law == ConeLaw::Coulomb) v[0] += mu * tangential_norm(u);
+  return v;
+}
+
+// Sliding / boundary solution of the local problem (header): r_N W d(phi) + t g(phi) = -b.
+struct Boundary {
+  Vec3 r = Vec3::Zero();
+  double residual = std::numeric_limits<double>::infinity();
+  bool found = false;
+};
+
+Boundary boundary_solution(const Mat3& W, const Vec3& b, double mu, ConeLaw law) {
+  const double gamma = law == ConeLaw::Coulomb ? 0.0 : -mu;
+  const auto vectors = [&](double phi, Vec3& a, Vec3& g) {
+    const double c = std::cos(phi), s = std::sin(phi);
+    a = W * Vec3(1.0, mu * c, mu * s);
+    g = Vec3(gamma, c, s);
+  };
+  const auto consistency = [&](double phi) {
+    Vec3 a, g;
+    vectors(phi, a, g);
+    return a.dot(g.cross(b));
+  };
+  Boundary best;
+  const auto consider = [&](double phi) {
+    Vec3 a, g;
+    vectors(phi, a, g);
+    const Vec3 ag = a.cross(g);
+    const double norm2 = ag.squaredNorm();
+    if (!(norm2 > 0.0)) return;
+    const double rN = -b.cross(g).dot(ag) / norm2;
+    const double t = b.cross(a).dot(ag) / norm2;  // from t (g x a) = -(b x a), g x a = -(a x g)
+    // t >= 0 up to the rounding of b (t has the units of u)
+    if (!(rN > 0.0) || t < -64.0 * kEps * b.norm()) return;
+    const Vec3 r(rN, mu * rN * std::cos(phi), mu * rN * std::sin(phi));
+    const double residual = (W * r + b + std::max(t, 0.0) * g).norm();  // u = -t g
+    if (residual < best.residual) best = {r, residual, true};
+  };
+  double previous_phi = 0.0, previous = consistency(0.0);
+  for (int i = 1; i <= kPhiIntervals; ++i) {
+    const double phi = 2.0 * std::numbers::pi * i / kPhiIntervals;
+    const double value = consistency(phi);
+    if (previous == 0.0) consider(previous_phi);
+    if ((previous < 0.0 && value > 0.0) || (previous > 0.0 && value < 0.0)) {
+      std::uintmax_t iterations = 200;
+      const auto bracket = boost::math::tools::toms748_solve(consistency, previous_phi, phi, previous, value,
+                                                             boost::math::tools::eps_tolerance<double>(), iterations);
+      consider(0.5 * (bracket.first + bracket.second));
+    }
+    previous_phi = phi;
+    previous = value;
+  }
+  return best;
+}
+
+void check_block_count(const MatX& W, const VecX& b, const VecX& mu) {
+  if (W.rows() != W.cols() || W.rows() % 3 != 0)
+    throw InputError("W", "invalid parameter 'W': must be square with 3 rows per contact, got " +
+                              std::to_string(W.rows()) + " x " + std::to_string(W.cols()));
+  if (b.size() != W.rows())
+    throw InputError("b", "invalid parameter 'b': must hold " + std::to_string(W.rows()) + " values (3 per contact)");
+  if (mu.size() != W.rows() / 3)
+    throw InputError("mu", "invalid parameter 'mu': must hold one friction coefficient per contact (" +
+                               std::to_string(W.rows() / 3) + ")");
+}
+
+void validate_problem(const MatX& W, const VecX& b, const VecX& mu) {
+  check_block_count(W, b, mu);
+  if (!W.allFinite()) throw InputError("W", "invalid parameter 'W': must be finite");
+  if (!b.allFinite()) throw InputError("b", "invalid parameter 'b': must be finite");
+  for (Eigen::Index k = 0; k < mu.size(); ++k)
+    if (!(std::isfinite(mu[k]) && mu[k] >= 0.0))
+      throw InputError("mu", "invalid parameter 'mu': friction coefficient of contact " + std::to_string(k) +
+                                 " must be finite and >= 0, got " + format_value(mu[k]));
+  const double largest = W.cwiseAbs().maxCoeff();
+  if ((W - W.transpose()).cwiseAbs().maxCoeff() > 100 * kEps * largest)
+    throw InputError("W", "invalid parameter 'W': must be symmetric (to 100 eps max|W|)");
+  for (Eigen::Index k = 0; k < mu.size(); ++k) {
+    Eigen::LLT<Mat3> llt(W.block<3, 3>(3 * k, 3 * k));
+    if (llt.info() != Eigen::Success)
+      throw InputError("W", "invalid parameter 'W': the diagonal block of contact " + std::to_string(k) +
+                                " is not positive definite");
+  }
+}
+
+}  // namespace
+
+Vec3 project_onto_friction_cone(const Vec3& x, double mu) {
+  const double tangential = tangential_norm(x);
+  if (tangential <= mu * x[0]) return x;
+  if (mu * tangential <= -x[0]) return Vec3::Zero();
+  const double normal = (x[0] + mu * tangential) / (1.0 + mu * mu);
+  return Vec3(normal, mu * normal * x[1] / tangential, mu * normal * x[2] / tangential);
+}
+
+Vec3 solve_local_cone_problem(const Mat3& W, const Vec3& b, double mu, ConeLaw law) {
+  if (mu == 0.0) return Vec3(std::max(0.0, -b[0] / W(0, 0)), 0.0, 0.0);
+  const bool takes_off = law == ConeLaw::Coulomb ? b[0] >= 0.0 : mu * tangential_norm(b) <= b[0];
+  if (takes_off) return Vec3::Zero();
+  const Vec3 stick = -W.ldlt().solve(b);
+  if (tangential_norm(stick) <= mu * stick[0]) return stick;
+  const Boundary slide = boundary_solution(W, b, mu, law);
+  if (!slide.found)
+    throw SolverError(law == ConeLaw::Coulomb ? "local Coulomb solver" : "local SOC solver",
+                      "no sliding solution on the cone's boundary", kPhiIntervals, b.norm());
+  return slide.r;
+}
+
+double cone_residual(const MatX& W, const VecX& b, const VecX& mu, const VecX& r, ConeLaw law) {
+  const VecX u = W * r + b;
+  double worst = 0.0, scale = 0.0;
+  for (Eigen::Index k = 0; k < mu.size(); ++k) {
+    const Mat3 block = W.block<3, 3>(3 * k, 3 * k);
+    const double rho = 1.0 / block.norm();
+    scale = std::max(scale, b.segment<3>(3 * k).norm() * rho);
+    const Vec3 rk = r.segment<3>(3 * k);
+    const Vec3 v = paired_velocity(u.segment<3>(3 * k), mu[k], law);
+    worst = std::max(worst, (rk - project_onto_friction_cone(rk - rho * v, mu[k])).norm());
+  }
+  return scale > 0.0 ? worst / scale : worst;
+}
+
+ConeSolution solve_cone_complementarity(const MatX& W, const VecX& b, const VecX& mu, ConeLaw law,
+                                        const ConeSettings& settings) {
+  validate_problem(W, b, mu);
+  require_open_interval("tolerance", settings.tolerance, 0.0, 1.0);
+  require_at_least("max_sweeps", settings.max_sweeps, 1);
+  const Eigen::Index n = mu.size();
+  const char* method = law == ConeLaw::Coulomb ? "block Gauss-Seidel (Coulomb)" : "block Gauss-Seidel (SOC)";
+  ConeSolution solution;
+  solution.r = VecX::Zero(3 * n);
+  double scale = 0.0;
+  for (Eigen::Index k = 0; k < n; ++k) scale = std::max(scale, b.segment<3>(3 * k).norm() / W.block<3, 3>(3 * k, 3 * k).norm());
+  if (n == 0 || scale == 0.0) {  // no contact, or nothing pushes: r = 0 is the solution
+    solution.u = b;
+    return solution;
+  }
+  for (std::size_t sweep = 1; sweep <= settings.max_sweeps; ++sweep) {
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const Mat3 block = W.block<3, 3>(3 * k, 3 * k);
+      const Vec3 local_b = b.segment<3>(3 * k) + W.middleRows(3 * k, 3) * solution.r - block * solution.r.segment<3>(3 * k);
+      solution.r.segment<3>(3 * k) = solve_local_cone_problem(block, local_b, mu[k], law);
+    }
+    solution.sweeps = sweep;
+    solution.residual = cone_residual(W, b, mu, solution.r, law);
+    check_time_budget(method, sweep, solution.residual);
+    if (solution.residual <= settings.tolerance) break;
+    if (sweep == settings.max_sweeps)
+      throw SolverError(method, std::string(method) + ": no convergence in " + std::to_string(sweep) +
+                                    " sweeps (natural-map residual " + format_value(solution.residual) + ")",
+                        sweep, solution.residual);
+  }
+  solution.u = W * solution.r + b;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const Vec3 rk = solution.r.segment<3>(3 * k);
+    solution.cone_violation = std::max(solution.cone_violation, std::max(0.0, tangential_norm(rk) - mu[k] * rk[0]) / scale);
+  }
+  return solution;
+}
+
+}  // namespace rodvv::solvers::contact

@@ -1,0 +1,184 @@
+// Cone complementarity (solvers/contact/cone_complementarity.hpp): the local exact solver and the
+// block Gauss-Seidel, for the Coulomb law and the plain SOC law, checked by the laws' own conditions
+// (take-off / stick / slide, r in K, u in K*, r.u = 0: no solver code), by Siconos' hand-checked
+// single contact (ALGORITHMS.md §4.4), and for the SOC law against an independent minimisation of
+// 1/2 r^T W r + b^T r over the cones (accelerated projected gradient: another algorithm).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include <Eigen/Eigenvalues>
+#include <string>
+
+#include "rodvv/common/errors.hpp"
+#include "rodvv/solvers/contact/cone_complementarity.hpp"
+#include "rodvv/testing/tolerance.hpp"
+
+namespace {
+
+namespace contact = rodvv::solvers::contact;
+using contact::ConeLaw;
+using rodvv::Mat3;
+using rodvv::MatX;
+using rodvv::Vec3;
+using rodvv::VecX;
+using rodvv::testing::kEpsilon;
+
+double tangential(const Vec3& x) { return std::hypot(x[1], x[2]); }
+
+// The law's conditions at one contact, as the largest violation relative to `scale` (|r| |W| + |b|).
+double law_violation(const Vec3& r, const Vec3& u, double mu, ConeLaw law, double scale) {
+  double v = std::max(0.0, tangential(r) - mu * r[0]);  // r in K_mu
+  v = std::max(v, -r[0]);
+  if (law == ConeLaw::SecondOrderCone) {
+    v = std::max(v, mu * tangential(u) - u[0]);  // u in K_mu*
+    v = std::max(v, std::abs(r.dot(u)) / scale);  // orthogonal (r.u has units r u)
+    return v / scale;
+  }
+  v = std::max(v, -u[0]);                                  // u_N >= 0
+  v = std::max(v, std::abs(r[0] * u[0]) / scale);          // r_N u_N = 0
+  if (tangential(u) > 1e3 * kEpsilon * scale) {            // sliding: r_T = -mu r_N u_T / |u_T|
+    const Vec3 expected(r[0], -mu * r[0] * u[1] / tangential(u), -mu * r[0] * u[2] / tangential(u));
+    v = std::max(v, (r - expected).norm());
+  }
+  return v / scale;
+}
+
+Mat3 random_spd(std::mt19937& rng) {
+  std::uniform_real_distribution<double> entry(-1.0, 1.0);
+  Mat3 a;
+  for (int i = 0; i < 9; ++i) a(i / 3, i % 3) = entry(rng);
+  return a * a.transpose() + 0.2 * Mat3::Identity();
+}
+
+TEST(ConeComplementarity, SiconosHandCheckedSlidingContact) {
+  // W = diag(2, 1, 1), b = (-1, 0.3, 0), mu = 0.5: sliding, r = (0.5, -0.25, 0), u = (0, 0.05, 0).
+  const Mat3 W = Vec3(2.0, 1.0, 1.0).asDiagonal();
+  const Vec3 r = contact::solve_local_cone_problem(W, Vec3(-1.0, 0.3, 0.0), 0.5, ConeLaw::Coulomb);
+  EXPECT_LE((r - Vec3(0.5, -0.25, 0.0)).norm(), 8 * kEpsilon);
+}
+
+TEST(ConeComplementarity, LocalSolutionsSatisfyTheirLaws) {
+  std::mt19937 rng(20261126);
+  std::uniform_real_distribution<double> entry(-1.0, 1.0), friction(0.05, 1.5);
+  int slides[2] = {0, 0};
+  for (int trial = 0; trial < 400; ++trial) {
+    const Mat3 W = random_spd(rng);
+    const Vec3 b(entry(rng), entry(rng), entry(rng));
+    const double mu = friction(rng);
+    for (ConeLaw law : {ConeLaw::Coulomb, ConeLaw::SecondOrderCone}) {
+      const Vec3 r = contact::solve_local_cone_problem(W, b, mu, law);
+      const Vec3 u = W * r + b;
+      const double scale = r.norm() * W.norm() + b.norm();
+      // exact up to the rounding of a root in phi and a few products: 1e3 eps
+      EXPECT_LE(law_violation(r, u, mu, law, scale), 1e3 * kEpsilon) << "trial " << trial;
+      slides[law == ConeLaw::Coulomb] += r[0] > 0.0 && std::abs(tangential(r) - mu * r[0]) < 1e-12 * r[0];
+    }
+  }
+  // The draws exercise the sliding branch of both laws.
+  EXPECT_GT(slides[0], 40);
+  EXPECT_GT(slides[1], 40);
+}
+
+// min 1/2 r^T W r + b^T r over the product of cones, by FISTA with the cone projection (Beck &
+// Teboulle 2009): an independent path to the SOC law's solution.
+VecX minimise_over_cones(const MatX& W, const VecX& b, const VecX& mu) {
+  const double step = 1.0 / W.operatorNorm();
+  VecX r = VecX::Zero(b.size()), y = r;
+  double t = 1.0;
+  for (int iteration = 0; iteration < 200000; ++iteration) {
+    VecX next = y - step * (W * y + b);
+    for (Eigen::Index k = 0; k < mu.size(); ++k)
+      next.segment<3>(3 * k) = contact::project_onto_friction_cone(next.segment<3>(3 * k), mu[k]);
+    const double t_next = 0.5 * (1.0 + std::sqrt(1.0 + 4.0 * t * t));
+    y = next + ((t - 1.0) / t_next) * (next - r);
+    if ((next - r).norm() < 1e-15 * (1.0 + next.norm())) return next;
+    r = next;
+    t = t_next;
+  }
+  return r;
+}
+
+MatX random_delassus(std::mt19937& rng, int contacts) {
+  std::uniform_real_distribution<double> entry(-1.0, 1.0);
+  MatX H(3 * contacts, 3 * contacts + 4);
+  for (Eigen::Index i = 0; i < H.size(); ++i) H(i % H.rows(), i / H.rows()) = entry(rng);
+  return H * H.transpose() + 0.05 * MatX::Identity(3 * contacts, 3 * contacts);
+}
+
+TEST(ConeComplementarity, BlockGaussSeidelSolvesBothLaws) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> entry(-1.0, 1.0), friction(0.1, 1.0);
+  for (int trial = 0; trial < 10; ++trial) {
+    const int n = 5;
+    const MatX W = random_delassus(rng, n);
+    VecX b(3 * n), mu(n);
+    for (int i = 0; i < 3 * n; ++i) b[i] = entry(rng);
+    for (int k = 0; k < n; ++k) mu[k] = friction(rng);
+    for (ConeLaw law : {ConeLaw::Coulomb, ConeLaw::SecondOrderCone}) {
+      contact::ConeSolution solution;
+      try {
+        solution = contact::solve_cone_complementarity(W, b, mu, law);
+      } catch (const rodvv::SolverError& e) {
+        // Gauss-Seidel on the Coulomb law is not guaranteed to converge (the problem is not a
+        // convex program); the SOC law's is (block coordinate descent on a convex QP).
+        EXPECT_EQ(law, ConeLaw::Coulomb) << e.what();
+        continue;
+      }
+      EXPECT_LE(solution.residual, 1e-12);
+      EXPECT_LE(solution.cone_violation, 1e-12);
+      const double scale = solution.r.norm() * W.norm() + b.norm();
+      for (int k = 0; k < n; ++k)
+        EXPECT_LE(law_violation(solution.r.segment<3>(3 * k), solution.u.segment<3>(3 * k), mu[k], law, scale), 1e-10)
+            << "trial " << trial << " contact " << k;
+      if (law == ConeLaw::SecondOrderCone) {
+        // The unique minimiser (W positive definite): both methods to their tolerances.
+        EXPECT_LE((solution.r - minimise_over_cones(W, b, mu)).norm(), 1e-8 * (1.0 + solution.r.norm())) << trial;
+      }
+    }
+  }
+}
+
+TEST(ConeComplementarity, AWrongConeLawIsSeenByTheResidual) {
+  // A sliding contact: the Coulomb solution is not the SOC law's, and each law's residual says so.
+  const Mat3 W = Vec3(2.0, 1.0, 1.0).asDiagonal();
+  const Vec3 b(-1.0, 0.3, 0.0);
+  const VecX mu = VecX::Constant(1, 0.5);
+  const VecX coulomb = contact::solve_local_cone_problem(W, b, 0.5, ConeLaw::Coulomb);
+  const VecX soc = contact::solve_local_cone_problem(W, b, 0.5, ConeLaw::SecondOrderCone);
+  EXPECT_GT((coulomb - soc).norm(), 1e-3);
+  EXPECT_LE(contact::cone_residual(W, b, mu, coulomb, ConeLaw::Coulomb), 1e-15);
+  EXPECT_LE(contact::cone_residual(W, b, mu, soc, ConeLaw::SecondOrderCone), 1e-15);
+  EXPECT_GT(contact::cone_residual(W, b, mu, coulomb, ConeLaw::SecondOrderCone), 1e-3);
+  EXPECT_GT(contact::cone_residual(W, b, mu, soc, ConeLaw::Coulomb), 1e-3);
+}
+
+TEST(ConeComplementarity, RefusesMalformedProblems) {
+  const MatX W = MatX::Identity(6, 6);
+  const VecX b = VecX::Constant(6, -1.0), mu = VecX::Constant(2, 0.3);
+  const auto parameter_of = [](const MatX& w, const VecX& bb, const VecX& m) {
+    try {
+      contact::solve_cone_complementarity(w, bb, m, ConeLaw::Coulomb);
+    } catch (const rodvv::InputError& e) {
+      return e.parameter();
+    }
+    return std::string("none");
+  };
+  EXPECT_EQ(parameter_of(W, b, mu), "none");
+  EXPECT_EQ(parameter_of(MatX::Identity(5, 5), VecX::Zero(5), mu), "W");
+  EXPECT_EQ(parameter_of(W, VecX::Zero(3), mu), "b");
+  EXPECT_EQ(parameter_of(W, b, VecX::Constant(3, 0.3)), "mu");
+  EXPECT_EQ(parameter_of(W, b, VecX::Constant(2, -0.1)), "mu");
+  MatX unsymmetric = W;
+  unsymmetric(0, 4) = 0.5;
+  EXPECT_EQ(parameter_of(unsymmetric, b, mu), "W");
+  MatX singular = W;
+  singular(4, 4) = 0.0;
+  EXPECT_EQ(parameter_of(singular, b, mu), "W");
+  VecX nan = b;
+  nan[2] = std::nan("");
+  EXPECT_EQ(parameter_of(W, nan, mu), "b");
+}
+
+}  // namespace
