@@ -154,6 +154,7 @@ ConeSolution solve_cone_complementarity(const MatX& W, const VecX& b, const VecX
   validate_problem(W, b, mu);
   require_open_interval("tolerance", settings.tolerance, 0.0, 1.0);
   require_at_least("max_sweeps", settings.max_sweeps, 1);
+
   const Eigen::Index n = mu.size();
   const char* method = law == ConeLaw::Coulomb ? "block Gauss-Seidel (Coulomb)" : "block Gauss-Seidel (SOC)";
   ConeSolution solution;
@@ -175,8 +176,9 @@ ConeSolution solve_cone_complementarity(const MatX& W, const VecX& b, const VecX
     check_time_budget(method, sweep, solution.residual);
     if (solution.residual <= settings.tolerance) break;
     if (sweep == settings.max_sweeps)
-      throw SolverError(method, std::string(method) + ": no convergence in " + std::to_string(sweep) +
-                                    " sweeps (natural-map residual " + format_value(solution.residual) + ")",
+      throw SolverError(method, "no convergence in " + std::to_string(sweep) + " sweeps (natural-map residual " +
+                                    format_value(solution.residual) + " > tolerance " +
+                                    format_value(settings.tolerance) + ")",
                         sweep, solution.residual);
   }
   solution.u = W * solution.r + b;

@@ -47,6 +47,19 @@ void validate(const RodModel& model) {
   if (model.gauss_points < 1 || model.gauss_points > 8)
     throw InputError("gauss_points", "invalid parameter 'gauss_points' = " +
                                          std::to_string(model.gauss_points) + ": must be an integer in [1, 8]");
+  if (!model.point_forces.empty()) {
+    if (model.point_forces.size() != model.elements * model.gauss_points)
+      throw InputError("point_forces", "invalid parameter 'point_forces': must be empty or hold one force per Gauss "
+                                       "point (" + std::to_string(model.elements * model.gauss_points) + "), got " +
+                                           std::to_string(model.point_forces.size()));
+    for (const auto& f : model.point_forces) require_finite_vector("point_forces", f);
+  }
+}
+
+void require_no_point_forces(const RodModel& model, const char* what) {
+  if (!model.point_forces.empty())
+    throw InputError("point_forces", std::string("invalid parameter 'point_forces': ") + what +
+                                         " does not take forces at the Gauss points (statics only); must be empty");
 }
 
 Vec3 elliptic_section_inertia(double line_density, double a, double b) {

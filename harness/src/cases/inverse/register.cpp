@@ -6,6 +6,7 @@ namespace rodvv::harness {
 void register_inverse_cases(Registry& registry) {
   inverse_cases::add_round_trip(registry);
   inverse_cases::add_stability_threshold(registry);
+  inverse_cases::add_round_trip_sphere(registry);
 }
 
 }  // namespace rodvv::harness

@@ -6,7 +6,7 @@
 // Generalised coordinates: q in R^{3N}, q.segment<3>(3 Q) = (tau, kappa1, kappa2) of element Q.
 // Frame convention: R = [n0 n1 n2] with n0 the tangent; R' = R [q_Q]x on element Q.
 // Loads (all dead, world components): gravity acceleration g acting on the line density rho S,
-// an end force and an end moment at s = L. Dissipation: stiffness-proportional (Rayleigh) damping
+// an end force and an end moment at s = L, and (statics only) forces at the Gauss points. Dissipation: stiffness-proportional (Rayleigh) damping
 // gamma K qdot. Units: any consistent set.
 //
 // Inertia (dynamics only; statics never reads it): the line density rho S (translation) and the
@@ -23,7 +23,8 @@
 // validate() throws rodvv::InputError naming the parameter and its range for: zero elements,
 // non-positive length / stiffness / density, a negative rotational inertia, a root frame that is not
 // a rotation (|R^T R - I| or |det R - 1| above 1e-10), negative damping, a non-finite entry anywhere,
-// a wrong-sized per-element natural strain, fewer than 1 or more than 8 Gauss points.
+// a wrong-sized per-element natural strain or point-force list, fewer than 1 or more than 8 Gauss
+// points.
 #include <cstddef>
 #include <vector>
 
@@ -44,11 +45,17 @@ struct RodModel {
   Mat3 root_frame = Mat3::Identity();     // columns n0, n1, n2 at s = 0
   Vec3 end_force = Vec3::Zero();          // dead force at s = L
   Vec3 end_moment = Vec3::Zero();         // dead moment at s = L
+  // Dead forces at the Gauss points (world, Kinematics::points() order): empty, or one per point
+  // (elements x gauss_points). Statics only (contact forces held fixed, inverse_contact.hpp): the
+  // dynamics, the solution struct and the super-clothoid refuse a non-empty list.
+  std::vector<Vec3> point_forces;
   double rayleigh_stiffness = 0.0;        // gamma: damping force -gamma K qdot
   std::size_t gauss_points = 4;           // Gauss-Legendre points per element (mass, gravity)
 };
 
 void validate(const RodModel& model);
+// InputError "point_forces" naming `what` (the dynamics, the solution struct, the super-clothoid).
+void require_no_point_forces(const RodModel& model, const char* what);
 
 // (rho I0, rho I1, rho I2) of a solid elliptic section of line density rho S with semi-axis a along
 // n1 and b along n2 (S = pi a b, I1 = pi a b^3 / 4, I2 = pi a^3 b / 4, I0 = I1 + I2):

@@ -1,0 +1,100 @@
+#include "rodvv/solvers/superhelix/inverse_contact.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <Eigen/Geometry>
+
+#include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
+#include "rodvv/solvers/superhelix/kinematics.hpp"
+#include "rodvv/solvers/superhelix/loads.hpp"
+
+namespace rodvv::solvers::superhelix {
+
+Mat3 contact_frame(const Vec3& normal) {
+  Eigen::Index axis = 0;
+  normal.cwiseAbs().minCoeff(&axis);
+  const Vec3 t1 = (Vec3::Unit(axis) - normal[axis] * normal).normalized();
+  Mat3 frame;
+  frame << normal, t1, normal.cross(t1);
+  return frame;
+}
+
+namespace {
+void check_contacts(const RodModel& model, const std::vector<RodContact>& contacts) {
+  const std::size_t points = model.elements * model.gauss_points;
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const RodContact& c = contacts[k];
+    if (c.point >= points)
+      throw InputError("contacts", "invalid parameter 'contacts': contact " + std::to_string(k) + " names Gauss point " +
+                                       std::to_string(c.point) + ", must be below " + std::to_string(points));
+    if (!c.normal.allFinite() || !(std::abs(c.normal.norm() - 1.0) <= 1e-10))
+      throw InputError("contacts", "invalid parameter 'contacts': the normal of contact " + std::to_string(k) +
+                                       " must be a finite unit vector (|n| - 1 within 1e-10)");
+    if (!(std::isfinite(c.mu) && c.mu > 0.0))
+      throw InputError("mu", "invalid parameter 'mu' of contact " + std::to_string(k) + " = " + format_value(c.mu) +
+                                 ": must be finite and > 0");
+  }
+}
+}  // namespace
+
+InverseContactResult inverse_statics_with_contacts(const RodModel& model, const VecX& q,
+                                                   const std::vector<RodContact>& contacts,
+                                                   const InverseContactOptions& options) {
+  validate(model);
+  if (q.size() != Eigen::Index(dof_count(model)) || !q.allFinite())
+    throw InputError("q", "invalid parameter 'q': must hold 3 N = " + std::to_string(dof_count(model)) +
+                              " finite values");
+  check_contacts(model, contacts);
+  require_positive("gamma", options.gamma);
+  const VecX preferred = options.preferred_rest.size() == 0 ? q : options.preferred_rest;
+  if (preferred.size() != q.size() || !preferred.allFinite())
+    throw InputError("preferred_rest", "invalid parameter 'preferred_rest': must be empty or hold 3 N = " +
+                                           std::to_string(q.size()) + " finite values");
+
+  const Kinematics kinematics(model, q);
+  const VecX k = generalised_stiffness(model);
+  const VecX force = external_generalised_force(model, kinematics);
+  const auto m = Eigen::Index(contacts.size());
+  InverseContactResult result;
+  MatX H(3 * m, q.size());
+  VecX mu(m);
+  for (Eigen::Index c = 0; c < m; ++c) {
+    const RodContact& contact = contacts[std::size_t(c)];
+    const GaussPoint& point = kinematics.points()[contact.point];
+    const Mat3 frame = contact_frame(contact.normal);
+    result.frames.push_back(frame);
+    H.middleRows(3 * c, 3) = frame.transpose() * kinematics.position_jacobian(point.element, point.sigma);
+    mu[c] = contact.mu;
+  }
+  const MatX HKinv = H * k.cwiseInverse().asDiagonal();
+  MatX W = HKinv * HKinv.transpose();
+  const double gamma = options.gamma * (m > 0 ? W.trace() / double(3 * m) : 1.0);
+  W.diagonal().array() += 2.0 * gamma;
+  W = 0.5 * (W + W.transpose());
+  const VecX z = q - force.cwiseQuotient(k) - preferred;
+  const VecX b = -HKinv * z;
+  const contact::ConeSolution socqp =
+      contact::solve_cone_complementarity(W, b, mu, contact::ConeLaw::SecondOrderCone, options.solver);
+  result.local_forces = socqp.r;
+  result.sweeps = socqp.sweeps;
+  result.residual = socqp.residual;
+  result.cone_violation = socqp.cone_violation;
+  for (Eigen::Index c = 0; c < m; ++c) result.forces.push_back(result.frames[std::size_t(c)] * socqp.r.segment<3>(3 * c));
+  result.natural_strain = q - (force + H.transpose() * socqp.r).cwiseQuotient(k);
+  return result;
+}
+
+RodModel contact_model(const RodModel& model, const std::vector<RodContact>& contacts,
+                       const InverseContactResult& result) {
+  RodModel at_rest = model;
+  at_rest.natural_strain_per_element.resize(model.elements);
+  for (std::size_t e = 0; e < model.elements; ++e)
+    at_rest.natural_strain_per_element[e] = result.natural_strain.segment<3>(Eigen::Index(3 * e));
+  at_rest.point_forces.assign(model.elements * model.gauss_points, Vec3::Zero());
+  for (std::size_t c = 0; c < contacts.size(); ++c) at_rest.point_forces[contacts[c].point] += result.forces[c];
+  return at_rest;
+}
+
+}  // namespace rodvv::solvers::superhelix
