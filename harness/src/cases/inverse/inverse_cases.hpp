@@ -9,5 +9,6 @@ namespace rodvv::harness::inverse_cases {
 void add_round_trip(Registry& registry);           // round-trip-planar, round-trip-3d
 void add_stability_threshold(Registry& registry);  // Greenhill's heavy column, statics and dynamics
 void add_round_trip_sphere(Registry& registry);    // frictional contact: the SOCQP of the 2013 paper
+void add_curve_fit(Registry& registry);            // from a polyline to a rest shape
 
 }  // namespace rodvv::harness::inverse_cases
