@@ -19,7 +19,10 @@ double stability_eigenvalue(const RodModel& model, const VecX& q, const Stabilit
   const VecX k = generalised_stiffness(model);
   const VecX elastic = k.cwiseProduct(q - natural_strain_vector(model));
   const VecX r = static_residual(model, q, 1.0);
-  const double scale = std::max(elastic.cwiseAbs().maxCoeff(), (elastic - r).cwiseAbs().maxCoeff());
+  // The residual a computed equilibrium can have: q0 = q - K^-1 F rounds to eps |q|, so K (q - q0)
+  // carries eps |K q| even where F is far smaller (a stiff rod; inverse_statics.hpp).
+  const double scale = std::max({elastic.cwiseAbs().maxCoeff(), (elastic - r).cwiseAbs().maxCoeff(),
+                                 k.cwiseProduct(q).cwiseAbs().maxCoeff()});
   if (!(r.cwiseAbs().maxCoeff() <= options.equilibrium_tolerance * scale))
     throw InputError("q", "invalid parameter 'q': not an equilibrium (scaled residual " +
                               format_value(r.cwiseAbs().maxCoeff() / scale) + " > " +

@@ -10,8 +10,9 @@
 // and its load stiffness is unsymmetric: if the relative asymmetry max |J - J^T| / max |J| exceeds
 // symmetry_tolerance (1e-7, kept from the central-difference Jacobian this replaced, whose noise was
 // ~1e-11), InputError ("end_moment"): a non-self-adjoint problem has no such criterion.
-// The state must be an equilibrium: the scaled residual max |r| / max |K (q - q0)|, |F| must be below
-// equilibrium_tolerance (InputError "q" otherwise). Dense, O(N^3).
+// The state must be an equilibrium: the scaled residual max |r| / max(|K (q - q0)|, |F|, |K q|) must be
+// below equilibrium_tolerance (InputError "q" otherwise; |K q| because a rest shape recovered by the
+// inverse statics holds q only to eps |K q|). Dense, O(N^3).
 #include "rodvv/common/eigen_types.hpp"
 #include "rodvv/solvers/superhelix/model.hpp"
 

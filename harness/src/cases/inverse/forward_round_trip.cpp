@@ -1,0 +1,45 @@
+#include "forward_round_trip.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/LU>
+
+#include "../case_builder.hpp"
+#include "rodvv/solvers/superhelix/kinematics.hpp"
+#include "rodvv/solvers/superhelix/loads.hpp"
+#include "rodvv/solvers/superhelix/statics.hpp"
+
+namespace rodvv::harness::inverse_cases {
+
+void add_round_trip_metrics(LevelOutput& out, const solvers::superhelix::RodModel& rest, const VecX& q) {
+  namespace sh = solvers::superhelix;
+  constexpr double kEps = std::numeric_limits<double>::epsilon();
+  sh::StaticOptions options;
+  options.tolerance = 1e-15;  // below the floor: Newton stops on a round-off step
+  options.initial_q = q;
+  for (Eigen::Index i = 0; i < q.size(); ++i)
+    options.initial_q[i] += 0.01 * q.lpNorm<Eigen::Infinity>() * std::sin(1.3 * double(i) + 0.2);
+  const VecX found = sh::solve_static(rest, options).q;
+  const VecX k = sh::generalised_stiffness(rest);
+  // Each load on its own: gravity and contact forces may cancel in F (a hair held by its contacts),
+  // but each is computed, and rounded, at its own size.
+  const sh::Kinematics kinematics(rest, q);
+  sh::RodModel weight = rest, contacts = rest;
+  weight.point_forces.clear();
+  contacts.gravity = Vec3::Zero();
+  contacts.end_force = contacts.end_moment = Vec3::Zero();
+  const double scale = std::max({(k.cwiseProduct(q)).lpNorm<Eigen::Infinity>(),
+                                 sh::external_generalised_force(weight, kinematics).lpNorm<Eigen::Infinity>(),
+                                 sh::external_generalised_force(contacts, kinematics).lpNorm<Eigen::Infinity>()});
+  const MatX inverse_jacobian = sh::static_jacobian(rest, q).partialPivLu().inverse();
+  const double conditioned = kEps * inverse_jacobian.cwiseAbs().rowwise().sum().maxCoeff() * scale;
+  const double error = (found - q).lpNorm<Eigen::Infinity>();
+  out.metrics["round_trip_error"] = cases::value_sample(error / conditioned, 1.0);
+  out.metrics["round_trip_error_relative"] = cases::diagnostic(error / q.lpNorm<Eigen::Infinity>());
+  out.metrics["equilibrium_residual"] =
+      cases::value_sample(sh::static_residual(rest, q).lpNorm<Eigen::Infinity>() / (kEps * scale), 1.0);
+}
+
+}  // namespace rodvv::harness::inverse_cases

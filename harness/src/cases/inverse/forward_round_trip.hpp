@@ -1,0 +1,20 @@
+#pragma once
+// The round trip of the inverse cases: the forward statics of the recovered rest model, started from
+// the target q perturbed by 1 % of |q|_inf (entry i moved by 0.01 |q|_inf sin(1.3 i + 0.2)), must
+// come back to q. Newton (exact Jacobian, line search) stops at its round-off floor; the recovered q0
+// holds q to round-off in F; both map to q through J^-1. Reported in those units:
+//   round_trip_error     = |q_found - q|_inf / (eps |J^-1|_inf scale),
+//   scale = max(|K q|_inf, |F_weight|_inf, |F_contacts|_inf) (each load on its own: they may cancel),
+//   equilibrium_residual = |r(q)|_inf / (eps scale)  (the forward residual at q),
+// and |q_found - q|_inf / |q|_inf. From a perturbation, not from the rest shape under load stepping:
+// a heavy rod's continuation from its rest shape may reach another equilibrium (measured on
+// round-trip-3d at g = 1e12), which says nothing about whether q0 holds q.
+#include "rodvv/common/eigen_types.hpp"
+#include "rodvv/harness/case.hpp"
+#include "rodvv/solvers/superhelix/model.hpp"
+
+namespace rodvv::harness::inverse_cases {
+
+void add_round_trip_metrics(LevelOutput& out, const solvers::superhelix::RodModel& rest, const VecX& q);
+
+}  // namespace rodvv::harness::inverse_cases
