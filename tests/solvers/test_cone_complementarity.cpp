@@ -9,6 +9,8 @@
 #include <random>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <string>
 
 #include "rodvv/common/errors.hpp"
@@ -152,6 +154,56 @@ TEST(ConeComplementarity, AWrongConeLawIsSeenByTheResidual) {
   EXPECT_LE(contact::cone_residual(W, b, mu, soc, ConeLaw::SecondOrderCone), 1e-15);
   EXPECT_GT(contact::cone_residual(W, b, mu, coulomb, ConeLaw::SecondOrderCone), 1e-3);
   EXPECT_GT(contact::cone_residual(W, b, mu, soc, ConeLaw::Coulomb), 1e-3);
+}
+
+// The classic forward check: a rigid body resting on an incline of angle alpha on three contacts (an
+// equilateral triangle in the plane through its centre of mass, so that the sliding body does not
+// turn), one implicit step h from rest: W = H M^-1 H^T (9 x 9, rank 6: redundant contacts), b the
+// free contact velocities h H M^-1 (m g, 0). It sticks iff tan alpha <= mu; when it slides, every
+// contact moves downhill at h g (sin alpha - mu cos alpha) (Coulomb's sliding block) with u_N = 0.
+TEST(ConeComplementarity, ABodyOnAnInclineSticksIffTanAlphaIsAtMostMu) {
+  const double alpha = 0.47, g = 9.81, m = 2.3, h = 1e-2;
+  const Mat3 plane = Eigen::AngleAxisd(alpha, Vec3::UnitX()).toRotationMatrix();  // columns: x, downhill-ish, normal
+  const Vec3 normal = plane.col(2), across = plane.col(0), uphill = plane.col(1);
+  const Mat3 inertia = Eigen::AngleAxisd(0.4, Vec3(1, 2, 3).normalized()).toRotationMatrix() *
+                       Vec3(0.3, 0.5, 0.7).asDiagonal() *
+                       Eigen::AngleAxisd(0.4, Vec3(1, 2, 3).normalized()).toRotationMatrix().transpose();
+  MatX M = MatX::Zero(6, 6);
+  M.topLeftCorner(3, 3) = m * Mat3::Identity();
+  M.bottomRightCorner(3, 3) = inertia;
+  MatX H(9, 6);
+  for (int k = 0; k < 3; ++k) {
+    const double phi = 2.0 * 3.141592653589793 * k / 3.0 + 0.3;
+    const Vec3 d = 0.4 * (std::cos(phi) * across + std::sin(phi) * uphill);
+    Mat3 frame;
+    frame << normal, across, uphill;  // (n, t1, t2)
+    Mat3 skew;
+    skew << 0, -d.z(), d.y(), d.z(), 0, -d.x(), -d.y(), d.x(), 0;
+    H.block(3 * k, 0, 3, 3) = frame.transpose();
+    H.block(3 * k, 3, 3, 3) = -frame.transpose() * skew;  // v + omega x d = v - [d]x omega
+  }
+  const MatX Minv = M.inverse();
+  MatX W = H * Minv * H.transpose();
+  W = 0.5 * (W + W.transpose());
+  VecX force = VecX::Zero(6);
+  force.head(3) = m * g * Vec3(0.0, 0.0, -1.0);
+  const VecX b = h * H * Minv * force;
+  for (double factor : {1.001, 0.999}) {
+    const double mu = factor * std::tan(alpha);
+    const auto solution = contact::solve_cone_complementarity(W, b, VecX::Constant(3, mu), ConeLaw::Coulomb);
+    const double slide = h * g * (std::sin(alpha) - mu * std::cos(alpha));  // downhill, when > 0
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 u = solution.u.segment<3>(3 * k);
+      if (factor > 1.0) {
+        EXPECT_LE(u.norm(), 1e-10 * h * g) << "sticks, contact " << k;
+      } else {
+        // downhill is -uphill: u_T2 = -slide; u_N = 0 and no sideways motion
+        EXPECT_NEAR(u[2], -slide, 1e-9 * std::abs(slide)) << "slides, contact " << k;
+        EXPECT_LE(std::abs(u[0]) + std::abs(u[1]), 1e-10 * h * g) << k;
+      }
+    }
+    EXPECT_LE(solution.residual, 1e-12);
+  }
 }
 
 TEST(ConeComplementarity, RefusesMalformedProblems) {
