@@ -1,6 +1,7 @@
 #include "rodvv/solvers/superhelix/load_stiffness.hpp"
 
 #include "rodvv/solvers/superhelix/element.hpp"
+#include "rodvv/solvers/superhelix/loads.hpp"
 
 namespace rodvv::solvers::superhelix {
 
@@ -72,17 +73,8 @@ MatX generalised_force_jacobian(const Kinematics& kinematics, const std::vector<
 }
 
 MatX load_stiffness(const RodModel& model, const Kinematics& kinematics, double load_factor) {
-  // Gravity and the dead point forces at the Gauss points.
-  std::vector<Vec3> gravity;
-  if (!model.gravity.isZero(0.0) || !model.point_forces.empty()) {
-    const auto& points = kinematics.points();
-    gravity.reserve(points.size());
-    for (std::size_t g = 0; g < points.size(); ++g)
-      gravity.push_back(load_factor * (points[g].mass * model.gravity +
-                                       (model.point_forces.empty() ? Vec3::Zero() : model.point_forces[g])));
-  }
-  return generalised_force_jacobian(kinematics, gravity, load_factor * model.end_force,
-                                    load_factor * model.end_moment);
+  return generalised_force_jacobian(kinematics, gauss_point_loads(model, kinematics, load_factor),
+                                    load_factor * model.end_force, load_factor * model.end_moment);
 }
 
 }  // namespace rodvv::solvers::superhelix

@@ -28,17 +28,21 @@ VecX generalised_force(const Kinematics& kinematics, const std::vector<Vec3>& po
   return force;
 }
 
-VecX external_generalised_force(const RodModel& model, const Kinematics& kinematics, double load_factor) {
-  // Gravity and the dead point forces at the Gauss points.
-  std::vector<Vec3> gravity;
+std::vector<Vec3> gauss_point_loads(const RodModel& model, const Kinematics& kinematics, double load_factor) {
+  std::vector<Vec3> loads;
   if (!model.gravity.isZero(0.0) || !model.point_forces.empty()) {
     const auto& points = kinematics.points();
-    gravity.reserve(points.size());
+    loads.reserve(points.size());
     for (std::size_t g = 0; g < points.size(); ++g)
-      gravity.push_back(load_factor * (points[g].mass * model.gravity +
-                                       (model.point_forces.empty() ? Vec3::Zero() : model.point_forces[g])));
+      loads.push_back(load_factor * (points[g].mass * model.gravity +
+                                     (model.point_forces.empty() ? Vec3::Zero() : model.point_forces[g])));
   }
-  return generalised_force(kinematics, gravity, load_factor * model.end_force, load_factor * model.end_moment);
+  return loads;
+}
+
+VecX external_generalised_force(const RodModel& model, const Kinematics& kinematics, double load_factor) {
+  return generalised_force(kinematics, gauss_point_loads(model, kinematics, load_factor),
+                           load_factor * model.end_force, load_factor * model.end_moment);
 }
 
 double elastic_energy(const RodModel& model, const VecX& q) {

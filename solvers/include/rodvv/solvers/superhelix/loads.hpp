@@ -17,7 +17,11 @@ namespace rodvv::solvers::superhelix {
 VecX generalised_force(const Kinematics& kinematics, const std::vector<Vec3>& point_forces,
                        const Vec3& tip_force, const Vec3& tip_moment);
 
-// Gravity m_g g at the Gauss points and the dead end force and moment, all scaled by load_factor.
+// The forces at the Gauss points (points() order): gravity m_g g plus the model's dead point_forces,
+// scaled by load_factor; empty when there are none.
+std::vector<Vec3> gauss_point_loads(const RodModel& model, const Kinematics& kinematics, double load_factor = 1.0);
+
+// Those and the dead end force and moment, all scaled by load_factor.
 VecX external_generalised_force(const RodModel& model, const Kinematics& kinematics,
                                 double load_factor = 1.0);
 
