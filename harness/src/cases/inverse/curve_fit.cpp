@@ -96,7 +96,7 @@ void add_curve_fit(Registry& registry) {
        "Derouet-Jourdan, Bertails-Descoubes & Thollot, CAGD 30(5), 2013 (floating tangents); ALGORITHMS.md §3",
        "Super-Helix curve fit (Levenberg-Marquardt on q, L, the root tangent and the points' arc lengths) and inverse "
        "statics",
-       "inverse/curve-fit"},
+},
       {make_parameter("L", 0.3, 0.0, 1e6, true, false, "length", "scale of the curve (chord of t in [0, 2] is about L)"),
        make_parameter("EI", 5e-3, 0.0, 1e12, true, false, "force length^2", "bending stiffness EI1"),
        make_parameter("rhoS", 0.05, 0.0, 1e12, true, false, "mass / length", "line density"),

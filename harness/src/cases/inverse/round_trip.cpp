@@ -169,7 +169,7 @@ void add(Registry& registry, bool planar, double measured_rest_error) {
                 "EI1 != EI2 != GJ.",
        "kappa0(s) = kappa(s) - C^-1 R^T m(s) of the continuous rod (RKF78 centreline, moment of the distal weight); the "
        "forward statics returns the target to round-off",
-       "ALGORITHMS.md §3.1; Derouet-Jourdan, Bertails-Descoubes & Thollot 2010", kMethod, "inverse/round-trip"},
+       "ALGORITHMS.md §3.1; Derouet-Jourdan, Bertails-Descoubes & Thollot 2010", kMethod},
       std::move(parameters), element_levels("number of elements", {8, 16, 32}, {8, 16, 32, 64}), std::move(metrics),
       std::move(gates), [planar](const Parameters& p, double level) { return run(problem_of(p, planar), level); });
   // The weight's share of the rest strain must stand above round-off for rest_strain_error to fit an

@@ -153,8 +153,7 @@ void add_round_trip_sphere(Registry& registry) {
        "to its tolerance; every force in its cone",
        "ALGORITHMS.md §3.2; Derouet-Jourdan, Bertails-Descoubes, Daviet & Thollot 2013",
        "Super-Helix inverse statics with frictional contact: SOCQP over the Coulomb cones by block Gauss-Seidel "
-       "(exact local SOC solver), q0 = q - K^-1 (F + H^T r)",
-       "inverse/round-trip"},
+       "(exact local SOC solver), q0 = q - K^-1 (F + H^T r)"},
       {make_parameter("L", 0.25, 0.0, 1e6, true, false, "length", "hair length"),
        make_parameter("R", 0.2, 0.0, 1e6, true, false, "length", "sphere radius"),
        make_parameter("EI", 1e-3, 0.0, 1e12, true, false, "force length^2", "bending stiffness in the arc's plane (EI1 = 1.4 EI, GJ = 0.6 EI)"),

@@ -128,7 +128,7 @@ void add_stability_threshold(Registry& registry) {
        "Greenhill 1881; Timoshenko & Gere 1961 §2.10; ALGORITHMS.md §3.1", 
        "Super-Helix inverse statics: exact Hessian K - dF/dq, generalised eigenvalue against K; semi-implicit Euler "
        "dynamics (O(N) articulated-body step)",
-       "inverse/stability-threshold"},
+},
       {make_parameter("L", 1.3, 0.0, 1e6, true, false, "length", "column length"),
        make_parameter("EI", 0.9, 0.0, 1e12, true, false, "force length^2", "weaker bending stiffness EI1"),
        make_parameter("rhoS", 0.7, 0.0, 1e12, true, false, "mass / length", "line density"),
