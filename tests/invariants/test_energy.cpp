@@ -86,6 +86,26 @@ TEST(PendulumEnergyStatistics, LinearEnergyGivesItsSlopeAndIntercept) {
   EXPECT_TRUE(is_close(stats.max_abs_deviation, lin.b * 100.0, 0.0, 2 * delta));
 }
 
+TEST(PendulumEnergyStatistics, WindowsSeeOnlyTheirOwnEnds) {
+  // E(t) = a + c sin(pi t / T): zero deviation at both ends, c in the middle. The first and the last
+  // 10 % of the span see at most c sin(0.1 pi) = 0.309 c, the whole run c: a late window that spanned
+  // the middle (issue 13: its start computed from the wrong end) reports c.
+  const double omega = 1.3, a = 0.2, c = 1e-3, span = 50.0;
+  Trajectory trajectory;
+  const std::size_t n = 2001;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = span * static_cast<double>(i) / static_cast<double>(n - 1);
+    const double energy = a + c * std::sin(std::numbers::pi * t / span);
+    trajectory.record(t, 0.0, std::sqrt(2.0 * (energy + omega * omega)));
+  }
+  const auto stats = inv::pendulum_energy_statistics(trajectory, omega);
+  const double edge = c * std::sin(0.1 * std::numbers::pi);
+  // the energies are rebuilt from sqrt and squares: a few eps of E ~ 2 (1e-15), far below c
+  EXPECT_NEAR(stats.early_deviation, edge, 1e-12);
+  EXPECT_NEAR(stats.late_deviation, edge, 1e-12);
+  EXPECT_NEAR(stats.max_abs_deviation, c, 1e-12);
+}
+
 TEST(PendulumEnergyStatistics, TinyDriftOnALargeEnergyIsResolved) {
   // Centred sums: a drift of 1e-12 per unit time on E ~ 1e3 over 1e5 samples. The one-pass formula
   // (sum t E - n tm Em) / (sum t^2 - n tm^2) was measured at 9.79e-13 here (2 % off, 400x the

@@ -30,7 +30,7 @@ struct InverseStatics {
   VecX natural_strain;                    // q0, 3N values (element Q: segment 3Q)
   double critical_stiffness_factor = 0;   // alpha_c
   double stability_eigenvalue = 0;        // smallest eigenvalue of K^-1/2 (K - sym D) K^-1/2 = 1 - lambda_max
-  double residual = 0;  // |K (q - q0) - F|_inf / max(|K q|_inf, |F|_inf) after rounding: O(eps)
+  double residual = 0;  // |K (q - q0) - F|_inf / max(|K q|_inf, |F|_inf, max K / L) after rounding: O(eps)
 };
 
 VecX natural_strain_for(const RodModel& model, const VecX& q);
