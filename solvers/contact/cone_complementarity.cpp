@@ -21,6 +21,7 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr int kPhiIntervals = 256;
+constexpr double kWarmBracket = 0.05;  // radians
 
 double tangential_norm(const Vec3& x) { return std::hypot(x[1], x[2]); }
 
@@ -38,7 +39,7 @@ struct Boundary {
   bool found = false;
 };
 
-Boundary boundary_solution(const Mat3& W, const Vec3& b, double mu, ConeLaw law) {
+Boundary boundary_solution(const Mat3& W, const Vec3& b, double mu, ConeLaw law, const Vec3* guess) {
   const double gamma = law == ConeLaw::Coulomb ? 0.0 : -mu;
   const auto vectors = [&](double phi, Vec3& a, Vec3& g) {
     const double c = std::cos(phi), s = std::sin(phi);
@@ -65,17 +66,28 @@ Boundary boundary_solution(const Mat3& W, const Vec3& b, double mu, ConeLaw law)
     const double residual = (W * r + b + std::max(t, 0.0) * g).norm();  // u = -t g
     if (residual < best.residual) best = {r, residual, true};
   };
+  const auto refine = [&](double low, double high, double f_low, double f_high) {
+    std::uintmax_t iterations = 200;
+    const auto bracket = boost::math::tools::toms748_solve(consistency, low, high, f_low, f_high,
+                                                           boost::math::tools::eps_tolerance<double>(), iterations);
+    consider(0.5 * (bracket.first + bracket.second));
+  };
+  // Warm start (the Gauss-Seidel's previous force of this contact): a bracket of +-kWarmBracket
+  // around its angle. Any root it gives with r_N > 0, t >= 0 solves the local problem (for the SOC
+  // law the solution is unique: a strictly convex QP), so the scan below is needed only without one.
+  if (guess != nullptr && (*guess)[0] > 0.0) {
+    const double phi0 = std::atan2((*guess)[2], (*guess)[1]);
+    const double low = phi0 - kWarmBracket, high = phi0 + kWarmBracket;
+    const double f_low = consistency(low), f_high = consistency(high);
+    if ((f_low < 0.0 && f_high > 0.0) || (f_low > 0.0 && f_high < 0.0)) refine(low, high, f_low, f_high);
+    if (best.found) return best;
+  }
   double previous_phi = 0.0, previous = consistency(0.0);
   for (int i = 1; i <= kPhiIntervals; ++i) {
     const double phi = 2.0 * std::numbers::pi * i / kPhiIntervals;
     const double value = consistency(phi);
     if (previous == 0.0) consider(previous_phi);
-    if ((previous < 0.0 && value > 0.0) || (previous > 0.0 && value < 0.0)) {
-      std::uintmax_t iterations = 200;
-      const auto bracket = boost::math::tools::toms748_solve(consistency, previous_phi, phi, previous, value,
-                                                             boost::math::tools::eps_tolerance<double>(), iterations);
-      consider(0.5 * (bracket.first + bracket.second));
-    }
+    if ((previous < 0.0 && value > 0.0) || (previous > 0.0 && value < 0.0)) refine(previous_phi, phi, previous, value);
     previous_phi = phi;
     previous = value;
   }
@@ -122,13 +134,13 @@ Vec3 project_onto_friction_cone(const Vec3& x, double mu) {
   return Vec3(normal, mu * normal * x[1] / tangential, mu * normal * x[2] / tangential);
 }
 
-Vec3 solve_local_cone_problem(const Mat3& W, const Vec3& b, double mu, ConeLaw law) {
+Vec3 solve_local_cone_problem(const Mat3& W, const Vec3& b, double mu, ConeLaw law, const Vec3* guess) {
   if (mu == 0.0) return Vec3(std::max(0.0, -b[0] / W(0, 0)), 0.0, 0.0);
   const bool takes_off = law == ConeLaw::Coulomb ? b[0] >= 0.0 : mu * tangential_norm(b) <= b[0];
   if (takes_off) return Vec3::Zero();
   const Vec3 stick = -W.ldlt().solve(b);
   if (tangential_norm(stick) <= mu * stick[0]) return stick;
-  const Boundary slide = boundary_solution(W, b, mu, law);
+  const Boundary slide = boundary_solution(W, b, mu, law, guess);
   if (!slide.found)
     throw SolverError(law == ConeLaw::Coulomb ? "local Coulomb solver" : "local SOC solver",
                       "no sliding solution on the cone's boundary", kPhiIntervals, b.norm());
@@ -168,8 +180,9 @@ ConeSolution solve_cone_complementarity(const MatX& W, const VecX& b, const VecX
   for (std::size_t sweep = 1; sweep <= settings.max_sweeps; ++sweep) {
     for (Eigen::Index k = 0; k < n; ++k) {
       const Mat3 block = W.block<3, 3>(3 * k, 3 * k);
-      const Vec3 local_b = b.segment<3>(3 * k) + W.middleRows(3 * k, 3) * solution.r - block * solution.r.segment<3>(3 * k);
-      solution.r.segment<3>(3 * k) = solve_local_cone_problem(block, local_b, mu[k], law);
+      const Vec3 previous = solution.r.segment<3>(3 * k);
+      const Vec3 local_b = b.segment<3>(3 * k) + W.middleRows(3 * k, 3) * solution.r - block * previous;
+      solution.r.segment<3>(3 * k) = solve_local_cone_problem(block, local_b, mu[k], law, &previous);
     }
     solution.sweeps = sweep;
     solution.residual = cone_residual(W, b, mu, solution.r, law);
