@@ -16,17 +16,25 @@
 //    (load_stiffness.hpp, O(N^2)) and by central differences of the residual (6N residuals of O(N):
 //    what Newton used before).
 //  - BM_InverseStatics: q0, load stiffness and the generalised eigenvalue (dense, O(N^3)).
+//  - BM_InverseHairOnSphere: the inverse statics with frictional contact of S strands (10 elements,
+//    one contact each, mu = 0.6) lying on a sphere along great circles, strand by strand (no
+//    strand-strand contact: each SOCQP is its own), S = 10 .. 1000 (10 000 contacts at S = 1000; the
+//    issue's target: under 5 s).
 // The fit exponent over N = 16 .. 1024 (issue: <= 1.1) is the least-squares slope of log(cpu time)
 // against log N of the BM_StepRecursive rows (e.g. from --benchmark_format=json).
 // The state is a curved, moving rod under gravity (set up outside the timed loop), with the model's
 // default rotational inertia (model.hpp) unless stated.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdint>
+#include <vector>
 
 #include "rodvv/solvers/superhelix/clothoid_dynamics.hpp"
 #include "rodvv/solvers/superhelix/dynamics.hpp"
+#include "rodvv/solvers/superhelix/inverse_contact.hpp"
 #include "rodvv/solvers/superhelix/inverse_statics.hpp"
+#include "rodvv/solvers/superhelix/kinematics.hpp"
 #include "rodvv/solvers/superhelix/root_motion.hpp"
 #include "rodvv/solvers/superhelix/statics.hpp"
 
@@ -154,6 +162,56 @@ void BM_InverseStatics(benchmark::State& bench) {
   bench.SetComplexityN(bench.range(0));
 }
 
+// One strand of the bundle: a great-circle arc of the sphere (radius rho, centre 0) in the plane
+// through the vertical turned by `azimuth`, from 10 degrees before the top, 10 elements.
+struct Strand {
+  sh::RodModel model;
+  rodvv::VecX q;
+  std::vector<sh::RodContact> contacts;
+};
+
+Strand strand_on_sphere(double azimuth) {
+  const double rho = 0.2025, L = 0.25, start = -0.1745;
+  const Vec3 a(std::cos(azimuth), std::sin(azimuth), 0.0), up(0.0, 0.0, 1.0);
+  Strand s;
+  s.model.elements = 10;
+  s.model.length = L;
+  s.model.gauss_points = 1;
+  s.model.stiffness = Vec3(0.6e-3, 1.4e-3, 1e-3);
+  s.model.line_density = 0.05;
+  s.model.gravity = Vec3(0.0, 0.0, -9.81);
+  const Vec3 outward = std::sin(start) * a + std::cos(start) * up;
+  const Vec3 tangent = std::cos(start) * a - std::sin(start) * up;
+  s.model.root_position = rho * outward;
+  s.model.root_frame << tangent, -outward, tangent.cross(-outward);
+  s.q = rodvv::VecX::Zero(30);
+  for (int e = 0; e < 10; ++e) s.q[3 * e + 2] = 1.0 / rho;
+  const sh::Kinematics kinematics(s.model, s.q);
+  for (std::size_t g = 0; g < kinematics.points().size(); ++g)
+    s.contacts.push_back({g, kinematics.points()[g].position.normalized(), 0.6});
+  return s;
+}
+
+void BM_InverseHairOnSphere(benchmark::State& bench) {
+  const auto strands = static_cast<std::size_t>(bench.range(0));
+  std::vector<Strand> bundle;
+  for (std::size_t i = 0; i < strands; ++i) bundle.push_back(strand_on_sphere(6.283185307179586 * double(i) / double(strands)));
+  sh::InverseContactOptions options;
+  options.solver.tolerance = 1e-8;
+  std::size_t sweeps = 0;
+  for (auto _ : bench) {
+    sweeps = 0;
+    for (const Strand& s : bundle) {
+      const auto result = sh::inverse_statics_with_contacts(s.model, s.q, s.contacts, options);
+      benchmark::DoNotOptimize(result.natural_strain.data());
+      sweeps += result.sweeps;
+    }
+  }
+  bench.SetComplexityN(bench.range(0));
+  bench.counters["contacts"] = static_cast<double>(10 * strands);
+  bench.counters["mean_sweeps"] = static_cast<double>(sweeps) / static_cast<double>(strands);
+}
+
 BENCHMARK(BM_StepRecursive)->RangeMultiplier(2)->Range(16, 1024)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
 BENCHMARK(BM_StepDense)->RangeMultiplier(2)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
 BENCHMARK(BM_StepRecursiveTranslationalOnly)->RangeMultiplier(4)->Range(16, 1024)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity(benchmark::oN);
@@ -164,6 +222,7 @@ BENCHMARK(BM_Statics)->RangeMultiplier(2)->Range(8, 256)->ArgName("N")->Unit(ben
 BENCHMARK(BM_JacobianExact)->RangeMultiplier(4)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_JacobianCentralDifference)->RangeMultiplier(4)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_InverseStatics)->RangeMultiplier(4)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
+BENCHMARK(BM_InverseHairOnSphere)->RangeMultiplier(10)->Range(10, 1000)->ArgName("strands")->Unit(benchmark::kMillisecond)->Complexity(benchmark::oN);
 
 }  // namespace
 

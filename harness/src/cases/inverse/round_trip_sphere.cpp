@@ -6,7 +6,7 @@
 // point per element (its midpoint), and every one touches the sphere (normal radial): N contacts, 3N
 // force components for 3N strains. The production path: inverse_statics_with_contacts (the SOCQP by
 // block Gauss-Seidel with the SOC law), then contact_model (the found forces as dead point forces)
-// and the forward statics from the rest shape.
+// and the forward statics from a perturbation of q (forward_round_trip.hpp).
 // Gates:
 //  - socqp_residual: the Gauss-Seidel's natural-map residual, at most its stopping tolerance 1e-8
 //    (W = H K^-2 H^T + 2 gamma I couples every contact to all those upstream: thousands of sweeps,
