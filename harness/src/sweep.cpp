@@ -16,6 +16,14 @@ namespace rodvv::harness {
 
 namespace {
 
+// An InputError naming this is the user's: a parameter of the case, its resolution, its levels.
+bool names_input_of(const Case& c, const std::string& name) {
+  if (name == c.info.resolution.name || name == "levels") return true;
+  for (const auto& parameter : c.info.parameters)
+    if (parameter.name == name) return true;
+  return false;
+}
+
 bool gates_an_order(const Case& c) {
   for (const auto& gate : c.gates)
     if (gate.kind == GateKind::Order) return true;
@@ -155,6 +163,14 @@ SweepResult run_sweep(const Case& c, const Parameters& parameters, std::span<con
       level.series = std::move(output.series);
     } catch (const SolverError& error) {
       level.failure = error.what();
+    } catch (const InputError& error) {
+      // Naming one of the case's parameters (or its resolution), it is the user's input: exit 2. Naming
+      // anything else, it is an input the case built for a solver from the results of another (a rest
+      // shape that does not hold its target, a state that is not at rest): a numerical failure of
+      // this level, not bad input (issue 13: a defect in the inverse statics ended a run with exit 2).
+      if (names_input_of(c, error.parameter())) throw;
+      level.failure = "internal input refused at " + c.info.resolution.name + " = " + format_value(levels[i]) +
+                      " (not a parameter of the case): " + error.what();
     } catch (const std::bad_alloc&) {
       level.failure = "out of memory at " + c.info.resolution.name + " = " + format_value(levels[i]) +
                       " (std::bad_alloc)";

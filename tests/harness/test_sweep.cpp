@@ -103,6 +103,31 @@ TEST(Sweep, ParameterWindowsAreListedAndCheckedAfterEarlierChecks) {
   EXPECT_EQ(earlier_calls, 2);
 }
 
+// An InputError from inside a level is the user's only when it names the case's own input (a
+// parameter, the resolution): then the run ends with it (exit 2). Naming anything else (an input
+// the case built, e.g. a rest shape that does not hold its target) it is that level's failure and the
+// sweep goes on.
+TEST(Sweep, AnInputErrorNamingNoParameterOfTheCaseIsALevelFailure) {
+  Case c = synthetic_case(2.0);
+  const LevelRunner original = c.run_level;
+  c.run_level = [original](const Parameters& p, double level) {
+    if (level == 0.05) throw rodvv::InputError("q", "invalid parameter 'q': not an equilibrium");
+    return original(p, level);
+  };
+  const SweepResult result = run_sweep(c, c.info.parameters, c.info.resolution.default_levels);
+  std::size_t failed = 0;
+  for (const auto& level : result.levels)
+    if (level.failure) {
+      ++failed;
+      EXPECT_NE(level.failure->find("not a parameter of the case"), std::string::npos) << *level.failure;
+    }
+  EXPECT_EQ(failed, 1u);
+  EXPECT_FALSE(result.passed());
+  Case named = synthetic_case(2.0);
+  named.run_level = [](const Parameters&, double) -> LevelOutput { throw rodvv::InputError("c", "c is wrong"); };
+  EXPECT_THROW(run_sweep(named, named.info.parameters, named.info.resolution.default_levels), rodvv::InputError);
+}
+
 // Every case's defaults lie inside its own windows (a window that refused them would refuse the run
 // `rodvv run` makes by default), and every listed window is a non-empty statement.
 TEST(Registry, EveryCaseAcceptsItsDefaultsInsideItsWindows) {
