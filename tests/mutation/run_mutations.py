@@ -54,7 +54,11 @@ def sync_tree(work):
         if copy.is_file() and filecmp.cmp(origin, copy, shallow=False):
             continue
         copy.parent.mkdir(parents=True, exist_ok=True)
-        shutil.copy2(origin, copy)
+        # A fresh time stamp, not the origin's (copy2): an object built since the origin was last
+        # edited (from a defect's copy) would otherwise look newer than the changed source, and the
+        # incremental build would keep it.
+        shutil.copy(origin, copy)
+        os.utime(copy)
     return src
 
 
