@@ -43,17 +43,14 @@ InverseContactResult inverse_statics_with_contacts(const RodModel& model, const 
                                                    const std::vector<RodContact>& contacts,
                                                    const InverseContactOptions& options) {
   validate(model);
-  if (q.size() != Eigen::Index(dof_count(model)) || !q.allFinite())
-    throw InputError("q", "invalid parameter 'q': must hold 3 N = " + std::to_string(dof_count(model)) +
-                              " finite values");
   check_contacts(model, contacts);
   require_positive("gamma", options.gamma);
+  const Kinematics kinematics(model, q);  // checks q (InputError "q": 3N finite values)
   const VecX preferred = options.preferred_rest.size() == 0 ? q : options.preferred_rest;
   if (preferred.size() != q.size() || !preferred.allFinite())
     throw InputError("preferred_rest", "invalid parameter 'preferred_rest': must be empty or hold 3 N = " +
                                            std::to_string(q.size()) + " finite values");
 
-  const Kinematics kinematics(model, q);
   const VecX k = generalised_stiffness(model);
   const VecX force = external_generalised_force(model, kinematics);
   const auto m = Eigen::Index(contacts.size());

@@ -16,28 +16,26 @@ namespace rodvv::solvers::superhelix {
 namespace {
 constexpr double kSymmetryTolerance = 1e-7;  // as stability.hpp
 
-void check_configuration(const RodModel& model, const VecX& q) {
-  validate(model);
-  if (q.size() != Eigen::Index(dof_count(model)))
-    throw InputError("q", "invalid parameter 'q': must hold 3 N = " + std::to_string(dof_count(model)) +
-                              " values, got " + std::to_string(q.size()));
-  if (!q.allFinite()) throw InputError("q", "invalid parameter 'q': must be finite");
+// q0 = q - K^-1 F, with F given (the one formula of both entry points).
+VecX rest_strain(const RodModel& model, const VecX& q, const VecX& force) {
+  return q - force.cwiseQuotient(generalised_stiffness(model));
 }
 }  // namespace
 
+// validate(model), then Kinematics checks q (InputError "q": size 3N, finite).
 VecX natural_strain_for(const RodModel& model, const VecX& q) {
-  check_configuration(model, q);
+  validate(model);
   const Kinematics kinematics(model, q);
-  return q - external_generalised_force(model, kinematics).cwiseQuotient(generalised_stiffness(model));
+  return rest_strain(model, q, external_generalised_force(model, kinematics));
 }
 
 InverseStatics inverse_statics(const RodModel& model, const VecX& q) {
-  check_configuration(model, q);
+  validate(model);
   const Kinematics kinematics(model, q);
   const VecX k = generalised_stiffness(model);
   const VecX force = external_generalised_force(model, kinematics);
   InverseStatics result;
-  result.natural_strain = q - force.cwiseQuotient(k);
+  result.natural_strain = rest_strain(model, q, force);
   const VecX elastic = k.cwiseProduct(q - result.natural_strain);
   const double scale = std::max({(k.cwiseProduct(q)).lpNorm<Eigen::Infinity>(), force.lpNorm<Eigen::Infinity>(),
                                  k.maxCoeff() / model.length});

@@ -71,9 +71,6 @@ void add_curve_fit(Registry& registry) {
       error_metric("fit_distance", "L", "max distance of the curve's points to the fitted rod / L", 3.0),
       error_metric("fit_length", "", "|fitted length / the curve's arc length (Gauss-Kronrod) - 1|", 4.0),
       diagnostic_metric("fit_iterations", "Levenberg-Marquardt iterations over the continuation levels"),
-      error_metric("round_trip_error", "eps |J^-1| scale", "|q found by forward statics - fitted q|", std::nullopt),
-      diagnostic_metric("round_trip_error_relative", "|q found - q|_inf / |q|_inf"),
-      error_metric("equilibrium_residual", "eps scale", "forward residual at the fitted q of its rest model", std::nullopt),
       diagnostic_metric("stiffness_factor", "stiffening applied by stable_rest_model (1: stable as given)")};
   std::vector<GateSpec> gates{
       order_gate("fit_distance", 3.0, "piecewise helices match position, tangent and curvature per element: O(h^3)"),
@@ -82,9 +79,8 @@ void add_curve_fit(Registry& registry) {
       order_gate("fit_length", 4.0, "measured (orders 4.04, 3.96 over N = 4, 8, 16): the length error of a least-squares "
                                     "piecewise helix, one order above its distance"),
       // measured 7.4302e-8 at N = 16 (1.89e-5, 1.15e-6 at N = 4, 8)
-      measured_bound("fit_length", 7.4302e-8, h, 4.0),
-      upper_bound_gate("round_trip_error", 64.0, GateScope::AllLevels, "round-off through J^-1, as inverse/round-trip-3d"),
-      upper_bound_gate("equilibrium_residual", 16.0, GateScope::AllLevels, "a subtraction, a division, a product per entry")};
+      measured_bound("fit_length", 7.4302e-8, h, 4.0)};
+  add_round_trip_specs(metrics, gates);
   Case c = make_case(
       "inverse",
       {"inverse/curve-fit", "From a curve to a rest shape: a Super-Helix fitted to 241 points of a smooth 3-D curve, then inverse statics",

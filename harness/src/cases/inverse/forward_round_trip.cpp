@@ -42,4 +42,16 @@ void add_round_trip_metrics(LevelOutput& out, const solvers::superhelix::RodMode
       cases::value_sample(sh::static_residual(rest, q).lpNorm<Eigen::Infinity>() / (kEps * scale), 1.0);
 }
 
+void add_round_trip_specs(std::vector<MetricSpec>& metrics, std::vector<GateSpec>& gates) {
+  metrics.push_back(cases::error_metric("round_trip_error", "eps |J^-1| scale",
+                                        "|q found by forward statics - q|, conditioned round-off units", std::nullopt));
+  metrics.push_back(cases::diagnostic_metric("round_trip_error_relative", "|q found - q|_inf / |q|_inf"));
+  metrics.push_back(cases::error_metric("equilibrium_residual", "eps scale",
+                                        "forward residual at q of the recovered rest model", std::nullopt));
+  gates.push_back(upper_bound_gate("round_trip_error", 64.0, GateScope::AllLevels,
+                                   "round-off: q0 holds q to eps in F, Newton stops at its floor, both through J^-1"));
+  gates.push_back(upper_bound_gate("equilibrium_residual", 16.0, GateScope::AllLevels,
+                                   "a subtraction, a division, a product per entry"));
+}
+
 }  // namespace rodvv::harness::inverse_cases

@@ -9,12 +9,20 @@
 // and |q_found - q|_inf / |q|_inf. From a perturbation, not from the rest shape under load stepping:
 // a heavy rod's continuation from its rest shape may reach another equilibrium (measured on
 // round-trip-3d at g = 1e12), which says nothing about whether q0 holds q.
+#include <vector>
+
 #include "rodvv/common/eigen_types.hpp"
 #include "rodvv/harness/case.hpp"
+#include "rodvv/harness/gate.hpp"
 #include "rodvv/solvers/superhelix/model.hpp"
 
 namespace rodvv::harness::inverse_cases {
 
 void add_round_trip_metrics(LevelOutput& out, const solvers::superhelix::RodModel& rest, const VecX& q);
+
+// The specs of those three metrics and their two gates (64 and 16: a multiple of eps, for the O(N)
+// sums in F and the LU of J; a subtraction, a division and a product per entry), shared by every
+// inverse case.
+void add_round_trip_specs(std::vector<MetricSpec>& metrics, std::vector<GateSpec>& gates);
 
 }  // namespace rodvv::harness::inverse_cases

@@ -128,19 +128,14 @@ void add(Registry& registry, bool planar, double measured_rest_error) {
   const double h = 1.0 / 32.0;
   std::vector<MetricSpec> metrics{
       error_metric("rest_strain_error", "", "max |q0 - kappa0(s_Q)| / max |kappa0| vs the continuous rod", 2.0),
-      error_metric("round_trip_error", "eps |J^-1| scale", "|q found by forward statics - q|, conditioned round-off units", std::nullopt),
-      diagnostic_metric("round_trip_error_relative", "|q found - q|_inf / |q|_inf"),
-      error_metric("equilibrium_residual", "eps scale", "forward residual at q of the recovered rest model", std::nullopt),
       diagnostic_metric("stability_eigenvalue", "smallest eigenvalue of K^-1/2 (K - dF/dq) K^-1/2 at q (> 0: stable)"),
       diagnostic_metric("stiffness_factor", "stiffening applied by stable_rest_model (1: stable as given)")};
   std::vector<GateSpec> gates{
       order_gate("rest_strain_error", 2.0, "midpoint strains, piecewise-constant frames, element-averaged moment: O(h^2)"),
       measured_bound("rest_strain_error", measured_rest_error, h, 2.0),
-      upper_bound_gate("round_trip_error", 64.0, GateScope::AllLevels,
-                       "round-off: q0 holds q to eps in F, Newton stops at its floor, both through J^-1"),
-      upper_bound_gate("equilibrium_residual", 16.0, GateScope::AllLevels, "a subtraction, a division, a product per entry"),
       lower_bound_gate("stability_eigenvalue", 0.0, GateScope::AllLevels,
                        "stable_rest_model stiffens to 1.25 x the critical factor when needed")};
+  add_round_trip_specs(metrics, gates);
   if (planar) {
     metrics.push_back(error_metric("out_of_plane_rest_strain", "eps max |kappa0|",
                                    "recovered twist and out-of-plane curvature of the planar problem", std::nullopt));
