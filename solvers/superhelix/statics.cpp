@@ -14,7 +14,8 @@ VecX static_residual(const RodModel& model, const VecX& q, double load_factor) {
 
 MatX static_jacobian(const RodModel& model, const VecX& q, double load_factor) {
   const Kinematics kinematics(model, q);
-  MatX J = -load_stiffness(model, kinematics, load_factor);
+  MatX J = load_stiffness(model, kinematics, load_factor);  // in place: one n x n buffer, not two
+  J *= -1.0;
   J.diagonal() += generalised_stiffness(model);
   return J;
 }

@@ -4,11 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/references/elastica.hpp"
 #include "rodvv/solvers/superhelix/kinematics.hpp"
+#include "rodvv/solvers/superhelix/newton.hpp"
 #include "rodvv/solvers/superhelix/statics.hpp"
 #include "rodvv/testing/superhelix_fixtures.hpp"
 #include "rodvv/testing/tolerance.hpp"
@@ -110,6 +112,23 @@ TEST(SuperHelixStatics, SmallSelfWeightDeflectionMatchesBeamTheory) {
   EXPECT_TRUE(rodvv::testing::is_close(-kin.tip_position().z(), expected, 1e-3, 0.0));
   // Teeth: the clamped-pinned or the tip-load formula (1/3) is far off.
   EXPECT_FALSE(rodvv::testing::is_close(-kin.tip_position().z(), 1e-6 / 3.0, 1e-3, 0.0));
+}
+
+TEST(SuperHelixStatics, NewtonDirectionSolvesByGmresOrFallsBackToLu) {
+  // A stiffness-dominated Jacobian (diagonal K plus a dense, non-symmetric D of relative size 0.3):
+  // GMRES's relative tolerance 1e-13 gives J d = -r to 1e-12 |r|.
+  const Eigen::Index n = 300;
+  std::srand(7);
+  rodvv::MatX J = 0.3 * rodvv::MatX::Random(n, n) / std::sqrt(double(n));
+  J.diagonal() += VecX::LinSpaced(n, 1.0, 40.0);
+  const VecX r = VecX::Random(n);
+  EXPECT_LE((J * sh::newton_direction(J, r) + r).norm(), 1e-12 * r.norm());
+  // The cyclic shift has a zero diagonal and needs n > 200 GMRES iterations: the LU fallback
+  // still returns the exact direction (-r shifted back).
+  rodvv::MatX shift = rodvv::MatX::Zero(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) shift((i + 1) % n, i) = 2.5;
+  const VecX d = sh::newton_direction(shift, r);
+  EXPECT_LE((shift * d + r).norm(), 64 * kEpsilon * r.norm());
 }
 
 TEST(SuperHelixStatics, BadOptionsNameTheParameter) {

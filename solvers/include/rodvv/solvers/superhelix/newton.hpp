@@ -5,7 +5,8 @@
 //
 // Jacobian dr/dq: exact when the caller passes one (the Super-Helix, load_stiffness.hpp), otherwise
 // by central differences of the residual (step cbrt(eps) max(|q_j|, 1/L), truncation error ~1e-11
-// relative: the super-clothoid), LU with partial pivoting, backtracking line search on 1/2 |r|^2 (Armijo
+// relative: the super-clothoid); direction by GMRES preconditioned by diag(J), LU with partial
+// pivoting when GMRES stalls (newton_direction); backtracking line search on 1/2 |r|^2 (Armijo
 // 1e-4, step halved down to 2^-30). Load stepping: lambda_k = k / load_steps, each step starting
 // from the previous one. Convergence: |r|_inf <= tolerance * scale, scale = max(k_max |q|_inf,
 // k_max / L, load_scale), or a Newton step at round-off (|dq|_inf L <= 64 eps (1 + |q|_inf L)).
@@ -44,6 +45,10 @@ struct NewtonScales {
 
 MatX central_difference_jacobian(const StaticResidual& residual, const VecX& q, double load_factor,
                                  double length);
+
+// d solving J d = -r: GMRES (diagonal preconditioner, relative tolerance 1e-13, at most min(n, 200)
+// iterations, restart 60), else LU with partial pivoting. O(n^2) per GMRES iteration.
+VecX newton_direction(const MatX& J, const VecX& residual);
 
 // Validates the options (InputError names load_steps / max_iterations / tolerance / initial_q).
 StaticResult newton_load_stepping(const StaticResidual& residual, const VecX& q0, const NewtonScales& scales,
