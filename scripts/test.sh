@@ -4,7 +4,10 @@
 # RODVV_TEST_PRESETS="release" limits the presets (e.g. for a quick local loop).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh
+# The browser stack for the report's browser test (tests/reports/test_report_browser.py), which
+# must then run, not skip.
+scripts/setup.sh chromium chromium-driver python3-selenium
+export RODVV_REQUIRE_BROWSER=1
 jobs=$(nproc)
 for preset in ${RODVV_TEST_PRESETS:-release asan}; do
   echo "=== preset $preset ===" >&2

@@ -3,6 +3,7 @@
 #include <set>
 
 #include "rodvv/reports/markup_escape.hpp"
+#include "rodvv/reports/overview.hpp"
 #include "rodvv/reports/report_tables.hpp"
 
 namespace rodvv::reports {
@@ -47,7 +48,60 @@ figcaption{font-size:.82em;color:#57606a;max-width:560px}
 p.skipped{margin:.4em 0 0;font-size:.9em;color:#57606a}
 ul.notes{margin:.2em 0 .8em;font-size:.9em;color:#57606a}
 footer{margin-top:3em;color:#57606a;font-size:.85em}
+.filters{position:sticky;top:0;z-index:2;background:#fff;border-bottom:1px solid #d0d7de;
+  padding:.5em 0;display:flex;gap:1.2em;flex-wrap:wrap;align-items:center;font-size:.92em}
+.filters label{font-weight:600}.filters select,.filters input{margin-left:.4em;font:inherit}
+.filtered-out{display:none}
+svg.overview{width:100%;max-width:1000px;height:auto;font-size:12px;fill:#1f2328}
+svg.overview .heading{font-weight:700;font-size:13px}
+svg.overview line.grid{stroke:#d0d7de;stroke-width:.7}
+svg.overview line.zero{stroke:#cf222e;stroke-width:1.2}
+svg.overview line.diagonal{stroke:#57606a;stroke-dasharray:4 3}
+svg.overview line.window{stroke:#8c959f;stroke-width:1}
+svg.overview rect.failzone{fill:#ffebe9}
+svg.overview circle{stroke:#fff;stroke-width:.8;fill-opacity:.75}
+svg.overview circle.pass{fill:#1a7f37}svg.overview circle.fail{fill:#cf222e}
+svg.overview circle.clipped{stroke:#1f2328;stroke-width:1.5}
+svg.overview a.point:hover circle{stroke:#0969da;stroke-width:2}
 )css";
+
+// The page's filters (family, status, name): everything of a case carries class "filterable" and
+// data-* attributes (case_filter_attributes); a "filter-container" (a family or group block, a
+// contents entry) is hidden when none of its filterables is shown. The URL's query string
+// (?family=...&status=...&name=...) sets the initial state, so a filtered view can be linked.
+constexpr const char* kFilterScript = R"js(
+(function () {
+  var family = document.getElementById('filter-family');
+  var status = document.getElementById('filter-status');
+  var name = document.getElementById('filter-name');
+  var count = document.getElementById('filter-count');
+  function matches(el) {
+    var d = el.dataset, f = family.value, s = status.value, n = name.value.trim().toLowerCase();
+    if (f && d.family !== f) return false;
+    if (s === 'skipped' ? d.skipped !== '1' : (s && d.status !== s)) return false;
+    return !n || d.name.toLowerCase().indexOf(n) >= 0;
+  }
+  function apply() {
+    document.querySelectorAll('.filterable').forEach(function (el) {
+      el.classList.toggle('filtered-out', !matches(el));
+    });
+    document.querySelectorAll('.filter-container').forEach(function (el) {
+      el.classList.toggle('filtered-out', !el.querySelector('.filterable:not(.filtered-out)'));
+    });
+    var cases = document.querySelectorAll('section.case');
+    var shown = document.querySelectorAll('section.case:not(.filtered-out)').length;
+    count.textContent = 'showing ' + shown + ' of ' + cases.length + ' cases';
+  }
+  var query = new URLSearchParams(window.location.search);
+  if (query.has('family')) family.value = query.get('family');
+  if (query.has('status')) status.value = query.get('status');
+  if (query.has('name')) name.value = query.get('name');
+  family.addEventListener('change', apply);
+  status.addEventListener('change', apply);
+  name.addEventListener('input', apply);
+  apply();
+})();
+)js";
 
 const char* css_class(CellStyle style) {
   switch (style) {
@@ -128,7 +182,8 @@ void append_info(std::string& out, const harness::CaseInfo& info) {
 void append_case(std::string& out, const harness::SweepResult& result, const std::string& id,
                  const PlotManifest& plots) {
   const auto& info = result.info;
-  out += "<section class=\"case\" id=\"" + escape_xml_attribute(id) + "\">\n<h4>" +
+  out += "<section class=\"case filterable\" id=\"" + escape_xml_attribute(id) + "\"" +
+         case_filter_attributes(result) + ">\n<h4>" +
          escape_xml(info.name) + " " + badge(result.passed()) + "</h4>\n";
   if (!info.title.empty()) out += "<p class=\"title\">" + escape_xml(info.title) + "</p>\n";
   append_info(out, info);
@@ -156,6 +211,68 @@ void append_case(std::string& out, const harness::SweepResult& result, const std
     out += "<h5>Plots</h5>\n<div class=\"plots\">\n";
     append_figures(out, it->second);
     out += "</div>\n";
+  }
+  out += "</section>\n";
+}
+
+// Family, status and name filters, sticky at the top of the page (script: kFilterScript).
+void append_filter_bar(std::string& out, const ValidationReport& report, const std::vector<CaseGroup>& groups) {
+  const ReportTotals sum = totals(report);
+  out += "<form class=\"filters\" id=\"filters\" onsubmit=\"return false\">\n"
+         "<label>Family<select id=\"filter-family\"><option value=\"\">all</option>";
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    if (g == 0 || groups[g].family != groups[g - 1].family)
+      out += "<option value=\"" + escape_xml_attribute(groups[g].family) + "\">" +
+             escape_xml(groups[g].family.empty() ? "(no family)" : groups[g].family) + "</option>";
+  out += "</select></label>\n<label>Status<select id=\"filter-status\"><option value=\"\">all</option>"
+         "<option value=\"fail\">failed (" + std::to_string(sum.cases - sum.cases_passed) +
+         ")</option><option value=\"pass\">passed (" + std::to_string(sum.cases_passed) +
+         ")</option><option value=\"skipped\">with skipped gates</option></select></label>\n"
+         "<label>Case<input id=\"filter-name\" type=\"search\" placeholder=\"name contains\"></label>\n"
+         "<span id=\"filter-count\"></span>\n</form>\n";
+}
+
+// Rows of a table that belong to cases: filterable by the page's filters.
+void append_case_rows_table(std::string& out, const Table& table, const ValidationReport& report,
+                            const std::vector<std::size_t>& row_cases) {
+  out += "<div class=\"scroll\"><table>\n<thead><tr>";
+  for (const auto& h : table.header) out += "<th>" + escape_xml(h) + "</th>";
+  out += "</tr></thead>\n<tbody>\n";
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    out += "<tr class=\"filterable\"" + case_filter_attributes(report.cases[row_cases[r]]) + ">";
+    for (const auto& cell : table.rows[r])
+      out += std::string("<td") + css_class(cell.style) + ">" + escape_xml(cell.text) + "</td>";
+    out += "</tr>\n";
+  }
+  out += "</tbody></table></div>\n";
+}
+
+// The first screen after the status: the overview figure, then failed gates and the closest
+// calls, then skipped gates (overview.hpp defines the margins).
+void append_at_a_glance(std::string& out, const ValidationReport& report, const std::vector<std::string>& case_ids) {
+  constexpr std::size_t kClosestCalls = 12;
+  const auto margins = gate_margins(report);
+  out += "<section id=\"at-a-glance\">\n<h2>At a glance</h2>\n";
+  out += "<figure class=\"overview\">\n" + overview_svg(report, margins, case_ids) +
+         "<figcaption>Every evaluated gate. Left: observed against theoretical order (dashed: as predicted; "
+         "bars: the accepted window). Right: headroom of bound gates, log10(bound / measured) (bounds that are "
+         "not positive: the relative distance); outlined points lie beyond the axis. Red fails; hover for "
+         "the gate, click for its case.</figcaption>\n</figure>\n";
+  const auto attention = needs_attention(margins, kClosestCalls);
+  std::size_t failed = 0;
+  for (const auto& m : attention) failed += m.passed ? 0 : 1;
+  out += "<h5>Failed gates (" + std::to_string(failed) + ") and the " +
+         std::to_string(attention.size() - failed) + " closest calls</h5>\n";
+  std::vector<std::size_t> row_cases;
+  for (const auto& m : attention) row_cases.push_back(m.case_index);
+  append_case_rows_table(out, attention_table(report, attention), report, row_cases);
+  const Table skipped = skipped_gates_table(report);
+  if (!skipped.empty()) {
+    row_cases.clear();
+    for (std::size_t c = 0; c < report.cases.size(); ++c)
+      for (std::size_t k = 0; k < report.cases[c].skipped_gates.size(); ++k) row_cases.push_back(c);
+    out += "<h5>Skipped gates (" + std::to_string(skipped.rows.size()) + ")</h5>\n";
+    append_case_rows_table(out, skipped, report, row_cases);
   }
   out += "</section>\n";
 }
@@ -218,21 +335,24 @@ std::string render_html(const ValidationReport& report, const PlotManifest& plot
     out += "</p>\n";
   }
 
+  append_filter_bar(out, report, groups);
+  append_at_a_glance(out, report, case_ids);
+
   // Table of contents: family -> group -> case.
   out += "<nav class=\"toc\">\n<h2>Contents</h2>\n<ul>\n";
   for (std::size_t g = 0; g < groups.size(); ++g) {
     const bool new_family = g == 0 || groups[g].family != groups[g - 1].family;
     if (new_family) {
       if (g != 0) out += "</ul></li>\n";
-      out += "<li><a class=\"family\" href=\"#" + escape_xml_attribute(family_ids[g]) + "\">" +
-             escape_xml(family_label(groups[g].family)) + "</a>\n<ul>\n";
+      out += "<li class=\"filter-container\"><a class=\"family\" href=\"#" + escape_xml_attribute(family_ids[g]) +
+             "\">" + escape_xml(family_label(groups[g].family)) + "</a>\n<ul>\n";
     }
-    out += "<li><a class=\"group\" href=\"#" + escape_xml_attribute(group_ids[g]) + "\">" +
-           escape_xml(group_label(groups[g].group)) + "</a>\n<ul>\n";
+    out += "<li class=\"filter-container\"><a class=\"group\" href=\"#" + escape_xml_attribute(group_ids[g]) +
+           "\">" + escape_xml(group_label(groups[g].group)) + "</a>\n<ul>\n";
     for (const std::size_t i : groups[g].cases) {
       const auto& c = report.cases[i];
-      out += "<li>" + badge(c.passed()) + " <a href=\"#" + escape_xml_attribute(case_ids[i]) +
-             "\">" + escape_xml(c.info.name) + "</a>" +
+      out += "<li class=\"filterable\"" + case_filter_attributes(c) + ">" + badge(c.passed()) + " <a href=\"#" +
+             escape_xml_attribute(case_ids[i]) + "\">" + escape_xml(c.info.name) + "</a>" +
              (c.info.title.empty() ? "" : " \u2014 " + escape_xml(c.info.title)) + "</li>\n";
     }
     out += "</ul></li>\n";
@@ -245,12 +365,15 @@ std::string render_html(const ValidationReport& report, const PlotManifest& plot
   out += "<h2>Provenance</h2>\n";
   append_table(out, provenance_table(report));
 
+  // Family and group blocks: filter containers, hidden when the filters leave them no case.
   for (std::size_t g = 0; g < groups.size(); ++g) {
     const bool new_family = g == 0 || groups[g].family != groups[g - 1].family;
-    if (new_family)
-      out += "<h2 id=\"" + escape_xml_attribute(family_ids[g]) + "\">" +
-             escape_xml(family_label(groups[g].family)) + "</h2>\n";
-    out += "<h3 id=\"" + escape_xml_attribute(group_ids[g]) + "\">" +
+    if (new_family) {
+      if (g != 0) out += "</div>\n";
+      out += "<div class=\"family-block filter-container\">\n<h2 id=\"" + escape_xml_attribute(family_ids[g]) +
+             "\">" + escape_xml(family_label(groups[g].family)) + "</h2>\n";
+    }
+    out += "<div class=\"group-block filter-container\">\n<h3 id=\"" + escape_xml_attribute(group_ids[g]) + "\">" +
            escape_xml(group_label(groups[g].group)) + "</h3>\n";
     if (const auto it = plots.groups.find(groups[g].group);
         !groups[g].group.empty() && it != plots.groups.end() && !it->second.empty()) {
@@ -259,10 +382,14 @@ std::string render_html(const ValidationReport& report, const PlotManifest& plot
       out += "</div>\n";
     }
     for (const std::size_t i : groups[g].cases) append_case(out, report.cases[i], case_ids[i], plots);
+    out += "</div>\n";
   }
+  if (!groups.empty()) out += "</div>\n";
 
   out += "<footer>Rendered from results.json (the canonical result format; full precision "
-         "there and in results.csv).</footer>\n</body>\n</html>\n";
+         "there and in results.csv).</footer>\n<script>";
+  out += kFilterScript;
+  out += "</script>\n</body>\n</html>\n";
   return out;
 }
 

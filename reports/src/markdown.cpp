@@ -89,6 +89,15 @@ std::string render_markdown(const ValidationReport& report) {
          (sum.gates_skipped ? " (" + std::to_string(sum.gates_skipped) + " skipped)" : "") + ", " +
          std::to_string(sum.levels_failed) +
          " of " + std::to_string(sum.levels) + " levels failed.\n\n";
+  // Where it is weakest (overview.hpp): failed gates, then the closest calls; skipped gates.
+  const auto attention = needs_attention(gate_margins(report), 12);
+  out += "## Needs attention\n\nFailed gates, then the passing gates closest to their bounds (margin: decades "
+         "below a bound, or order units inside an order window).\n\n";
+  append_table(out, attention_table(report, attention));
+  if (const Table skipped = skipped_gates_table(report); !skipped.empty()) {
+    out += "Skipped gates (not evaluated):\n\n";
+    append_table(out, skipped);
+  }
   out += "## Provenance\n\n";
   append_table(out, provenance_table(report));
   out += "## Summary\n\n";

@@ -25,14 +25,15 @@ std::string range(const harness::Parameter& p) {
          (p.max_open ? ")" : "]");
 }
 
-// Orders are shown with 2 decimals; bounds on errors and invariants in scientific notation.
+}  // namespace
+
 std::string gate_number(harness::GateKind kind, const std::optional<double>& value) {
   return kind == harness::GateKind::Order ? format_order(value) : format_error(value);
 }
 
 // Built by appending: GCC 12 gives a false -Wrestrict for `"literal" + std::string&&`
 // (GCC bug 105651).
-std::string window(const harness::GateResult& g) {
+std::string gate_window(const harness::GateResult& g) {
   std::string out;
   if (g.lower && g.upper) {
     out.append("[").append(gate_number(g.kind, g.lower)).append(", ");
@@ -46,6 +47,8 @@ std::string window(const harness::GateResult& g) {
   }
   return out;
 }
+
+namespace {
 
 std::string pairwise(const std::vector<double>& orders) {
   std::string out;
@@ -151,7 +154,7 @@ CaseTables case_tables(const harness::SweepResult& result) {
                     "rationale"};
   for (const auto& g : result.gates)
     t.gates.rows.push_back({text(g.name), text(harness::to_string(g.kind)), text(g.metric),
-                            num(gate_number(g.kind, g.measured)), num(window(g)), status(g.passed),
+                            num(gate_number(g.kind, g.measured)), num(gate_window(g)), status(g.passed),
                             text(g.reason), text(g.rationale)});
   t.skipped_gates = result.skipped_gates;
   return t;
@@ -193,6 +196,27 @@ Table provenance_table(const ValidationReport& report) {
     for (const auto& s : report.merged_from) sources += (sources.empty() ? "" : ", ") + s;
     t.rows.push_back({text("merged from"), text(sources)});
   }
+  return t;
+}
+
+Table attention_table(const ValidationReport& report, const std::vector<GateMargin>& rows) {
+  Table t;
+  t.header = {"case", "gate", "kind", "measured", "accepted", "margin", "status"};
+  for (const auto& m : rows) {
+    const auto& result = report.cases[m.case_index];
+    const auto& gate = result.gates[m.gate_index];
+    t.rows.push_back({text(result.info.name), text(gate.name), text(harness::to_string(gate.kind)),
+                      num(gate_number(gate.kind, gate.measured)), num(gate_window(gate)), num(margin_text(m)),
+                      status(m.passed)});
+  }
+  return t;
+}
+
+Table skipped_gates_table(const ValidationReport& report) {
+  Table t;
+  t.header = {"case", "skipped gate"};
+  for (const auto& result : report.cases)
+    for (const auto& why : result.skipped_gates) t.rows.push_back({text(result.info.name), text(why)});
   return t;
 }
 
