@@ -6,11 +6,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 #include "gate_table.hpp"
 #include "progress.hpp"
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
+#include "rodvv/harness/parallel_sweeps.hpp"
 #include "rodvv/harness/registry.hpp"
 #include "rodvv/harness/sweep.hpp"
 #include "rodvv/reports/csv.hpp"
@@ -27,6 +29,14 @@ namespace {
 using harness::Case;
 using harness::SweepResult;
 
+// -j: at least 1, at most 1024; unset, the core count (hardware_concurrency, 1 if unknown).
+std::size_t worker_count(const CommonOptions& common) {
+  if (!common.jobs) return std::max(1u, std::thread::hardware_concurrency());
+  if (*common.jobs < 1 || *common.jobs > 1024)
+    throw InputError("--jobs", fmt::format("invalid --jobs {}: must be a whole number in [1, 1024]", *common.jobs));
+  return std::size_t(*common.jobs);
+}
+
 // Runs each case at its default (or extended, or given) levels with the --set overrides applied.
 // All parameters of all cases are validated before the first level runs, so bad input costs nothing.
 std::vector<SweepResult> run_cases(const std::vector<const Case*>& cases, const CommonOptions& common,
@@ -34,6 +44,7 @@ std::vector<SweepResult> run_cases(const std::vector<const Case*>& cases, const 
   if (!(common.level_budget > 0.0 && common.level_budget <= 1e6))
     throw InputError("--level-budget", fmt::format("invalid --level-budget {}: must be a number of seconds in (0, 1e6]",
                                                    format_value(common.level_budget)));
+  const std::size_t workers = worker_count(common);
   std::vector<harness::Parameters> parameters;
   for (const Case* c : cases) {
     harness::Parameters p = c->info.parameters;
@@ -49,16 +60,15 @@ std::vector<SweepResult> run_cases(const std::vector<const Case*>& cases, const 
                                                  : harness::sweep_levels(*c, common.extended));
     parameters.push_back(std::move(p));
   }
-  ProgressReporter progress(cases.size(), common.verbose);
-  std::vector<SweepResult> results;
+  std::vector<harness::SweepJob> jobs;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const auto levels = levels_override ? std::span<const double>(*levels_override)
                                         : harness::sweep_levels(*cases[i], common.extended);
-    results.push_back(
-        harness::run_sweep(*cases[i], parameters[i], levels, progress.level_callback(), common.level_budget));
-    progress.case_finished(results.back());
+    jobs.push_back({cases[i], std::move(parameters[i]), std::vector<double>(levels.begin(), levels.end())});
   }
-  return results;
+  ProgressReporter progress(cases.size(), common.verbose);
+  return harness::run_sweeps(jobs, workers, common.level_budget, progress.level_callback(),
+                             [&progress](const SweepResult& result) { progress.case_finished(result); });
 }
 
 reports::ValidationReport make_report(std::vector<SweepResult> results) {

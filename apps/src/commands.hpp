@@ -18,6 +18,7 @@ struct CommonOptions {
   bool extended = false;                 // larger sweeps
   bool verbose = false;                  // per-level progress
   double level_budget = harness::kDefaultLevelBudgetSeconds;  // --level-budget: seconds per level
+  std::optional<int> jobs;  // -j: levels run at once; unset: the machine's core count
 };
 
 struct RunOptions {

@@ -29,6 +29,9 @@ void add_common(CLI::App* command, rodvv::apps::CommonOptions& common, bool case
   command->add_option("--level-budget", common.level_budget,
                       "wall-clock seconds one level may take (default 300); past it the level fails, naming the "
                       "budget, and the run goes on");
+  command->add_option("-j,--jobs", common.jobs,
+                      "levels run at once on worker threads, in [1, 1024] (default: the core count); the results "
+                      "are those of -j 1, only the times differ");
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <ctime>
+#include <time.h>
 #include <cmath>
 #include <limits>
 #include <new>
@@ -22,6 +23,14 @@ bool names_input_of(const Case& c, const std::string& name) {
   for (const auto& parameter : c.info.parameters)
     if (parameter.name == name) return true;
   return false;
+}
+
+// CPU time of the calling thread: a level runs on one thread, so this is its own CPU time even
+// when other levels run beside it (std::clock counts the whole process).
+double thread_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
 }
 
 bool gates_an_order(const Case& c) {
@@ -139,50 +148,43 @@ void split_level(Case& c, SolveLevel solve, MeasureSolution measure) {
   c.measure = std::move(measure);
 }
 
-SweepResult run_sweep(const Case& c, const Parameters& parameters, std::span<const double> levels,
-                      const ProgressCallback& progress, double level_budget_seconds) {
-  validate_levels(c, levels);
-  if (c.check_parameters) c.check_parameters(parameters);
-
+LevelResult run_level(const Case& c, const Parameters& parameters, double level_value,
+                      double level_budget_seconds) {
   using Clock = std::chrono::steady_clock;
-  const auto sweep_start = Clock::now();
+  LevelResult level;
+  level.level = level_value;
+  level.h = c.info.resolution.h(level_value);
+  const auto start = Clock::now();
+  const double cpu_start = thread_cpu_seconds();
+  try {
+    const TimeBudget budget(level_budget_seconds);
+    LevelOutput output = c.run_level(parameters, level_value);
+    level.metrics = std::move(output.metrics);
+    level.series = std::move(output.series);
+  } catch (const SolverError& error) {
+    level.failure = error.what();
+  } catch (const InputError& error) {
+    // Naming one of the case's parameters (or its resolution), it is the user's input: exit 2. Naming
+    // anything else, it is an input the case built for a solver from the results of another (a rest
+    // shape that does not hold its target, a state that is not at rest): a numerical failure of
+    // this level, not bad input (issue 13: a defect in the inverse statics ended a run with exit 2).
+    if (names_input_of(c, error.parameter())) throw;
+    level.failure = "internal input refused at " + c.info.resolution.name + " = " + format_value(level_value) +
+                    " (not a parameter of the case): " + error.what();
+  } catch (const std::bad_alloc&) {
+    level.failure = "out of memory at " + c.info.resolution.name + " = " + format_value(level_value) +
+                    " (std::bad_alloc)";
+  }
+  level.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  level.cpu_seconds = thread_cpu_seconds() - cpu_start;
+  return level;
+}
+
+SweepResult finish_sweep(const Case& c, const Parameters& parameters, std::vector<LevelResult> levels) {
   SweepResult result;
   result.info = c.info;
   result.info.parameters = parameters;
-
-  for (std::size_t i = 0; i < levels.size(); ++i) {
-    LevelResult level;
-    level.level = levels[i];
-    level.h = c.info.resolution.h(levels[i]);
-    const auto start = Clock::now();
-    const std::clock_t cpu_start = std::clock();
-    try {
-      const TimeBudget budget(level_budget_seconds);
-      LevelOutput output = c.run_level(parameters, levels[i]);
-      level.metrics = std::move(output.metrics);
-      level.series = std::move(output.series);
-    } catch (const SolverError& error) {
-      level.failure = error.what();
-    } catch (const InputError& error) {
-      // Naming one of the case's parameters (or its resolution), it is the user's input: exit 2. Naming
-      // anything else, it is an input the case built for a solver from the results of another (a rest
-      // shape that does not hold its target, a state that is not at rest): a numerical failure of
-      // this level, not bad input (issue 13: a defect in the inverse statics ended a run with exit 2).
-      if (names_input_of(c, error.parameter())) throw;
-      level.failure = "internal input refused at " + c.info.resolution.name + " = " + format_value(levels[i]) +
-                      " (not a parameter of the case): " + error.what();
-    } catch (const std::bad_alloc&) {
-      level.failure = "out of memory at " + c.info.resolution.name + " = " + format_value(levels[i]) +
-                      " (std::bad_alloc)";
-    }
-    level.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    level.cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
-    if (progress)
-      progress({c.info.name, c.info.resolution.name, i, levels.size(), level.level,
-                level.wall_seconds, level.failure.has_value()});
-    result.levels.push_back(std::move(level));
-  }
-
+  result.levels = std::move(levels);
   result.analyses = analyse_levels(c, result.levels);
   // A measured bound holds at the default parameters; changing a unit scale alone keeps it.
   bool at_defaults = parameters.size() == c.info.parameters.size();
@@ -195,7 +197,23 @@ SweepResult run_sweep(const Case& c, const Parameters& parameters, std::span<con
     else
       result.gates.push_back(evaluate_gate(gate, result));
   }
-  result.wall_seconds = std::chrono::duration<double>(Clock::now() - sweep_start).count();
+  return result;
+}
+
+SweepResult run_sweep(const Case& c, const Parameters& parameters, std::span<const double> levels,
+                      const ProgressCallback& progress, double level_budget_seconds) {
+  validate_levels(c, levels);
+  if (c.check_parameters) c.check_parameters(parameters);
+  const auto sweep_start = std::chrono::steady_clock::now();
+  std::vector<LevelResult> results;
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    results.push_back(run_level(c, parameters, levels[i], level_budget_seconds));
+    if (progress)
+      progress({c.info.name, c.info.resolution.name, i, levels.size(), results.back().level,
+                results.back().wall_seconds, results.back().failure.has_value()});
+  }
+  SweepResult result = finish_sweep(c, parameters, std::move(results));
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - sweep_start).count();
   return result;
 }
 

@@ -5,6 +5,7 @@
 #include <functional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "rodvv/harness/case.hpp"
 
@@ -43,6 +44,13 @@ inline constexpr double kDefaultLevelBudgetSeconds = 300.0;
 SweepResult run_sweep(const Case& c, const Parameters& parameters, std::span<const double> levels,
                       const ProgressCallback& progress = {},
                       double level_budget_seconds = kDefaultLevelBudgetSeconds);
+
+// The two halves of run_sweep, for runners that schedule levels themselves (parallel_sweeps.hpp):
+// one level, timed (wall and the thread's CPU time) under its budget, a SolverError or bad_alloc
+// recorded as its failure; and the analyses and gates over the finished levels (wall_seconds left
+// for the caller to set).
+LevelResult run_level(const Case& c, const Parameters& parameters, double level, double level_budget_seconds);
+SweepResult finish_sweep(const Case& c, const Parameters& parameters, std::vector<LevelResult> levels);
 
 // Orders (and Richardson/GCI for extrapolable metrics) of a case's metrics over finished levels.
 std::vector<MetricAnalysis> analyse_levels(const Case& c, const std::vector<LevelResult>& levels);

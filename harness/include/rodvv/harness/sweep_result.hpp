@@ -35,8 +35,8 @@ struct LevelResult {
   double level = 0.0;   // the resolution as given (dt, N, tol)
   double h = 0.0;       // mesh size used for the fits
   double wall_seconds = 0.0;
-  // CPU time of the process during the level (levels run one at a time): the cost measure of a
-  // work-precision comparison, less disturbed than wall time on a shared machine.
+  // CPU time of the thread that ran the level (a level runs on one thread, also under `-j N`): the
+  // cost measure of a work-precision comparison, less disturbed than wall time on a shared machine.
   double cpu_seconds = 0.0;
   std::map<std::string, MetricSample> metrics;
   std::vector<Series> series;
