@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "rodvv/solvers/superhelix/clothoid_dynamics.hpp"
+#include "rodvv/solvers/superhelix/clothoid_statics.hpp"
 #include "rodvv/solvers/superhelix/dynamics.hpp"
 #include "rodvv/solvers/superhelix/inverse_contact.hpp"
 #include "rodvv/solvers/superhelix/inverse_statics.hpp"
@@ -118,6 +119,24 @@ void BM_Statics(benchmark::State& bench) {
   std::size_t iterations = 0;
   for (auto _ : bench) {
     const auto result = sh::solve_static(model, options);
+    benchmark::DoNotOptimize(result.q.data());
+    iterations = result.iterations;
+  }
+  bench.SetComplexityN(bench.range(0));
+  bench.counters["newton_iterations"] = static_cast<double>(iterations);
+}
+
+// The super-clothoid's statics on the same heavy rod, on its central-difference Jacobian (issue 17's
+// target, under 200 ms at N = 256, needs exact derivatives: 2.4 s at N = 32, 8.3 s at N = 64, O(N^2)).
+void BM_ClothoidStatics(benchmark::State& bench) {
+  const auto n = static_cast<std::size_t>(bench.range(0));
+  sh::RodModel model = model_of(n);
+  model.gravity = Vec3(0.0, 0.0, -3.0);
+  sh::StaticOptions options;
+  options.load_steps = 2;
+  std::size_t iterations = 0;
+  for (auto _ : bench) {
+    const auto result = sh::solve_clothoid_static(model, options);
     benchmark::DoNotOptimize(result.q.data());
     iterations = result.iterations;
   }
@@ -219,6 +238,7 @@ BENCHMARK(BM_StepRecursiveMovingRoot)->RangeMultiplier(4)->Range(16, 1024)->ArgN
 BENCHMARK(BM_ClothoidStepRecursive)->RangeMultiplier(2)->Range(16, 1024)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
 BENCHMARK(BM_ClothoidStepDense)->RangeMultiplier(2)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
 BENCHMARK(BM_Statics)->RangeMultiplier(2)->Range(8, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
+BENCHMARK(BM_ClothoidStatics)->RangeMultiplier(2)->Range(8, 64)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_JacobianExact)->RangeMultiplier(4)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_JacobianCentralDifference)->RangeMultiplier(4)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_InverseStatics)->RangeMultiplier(4)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();

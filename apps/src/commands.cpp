@@ -12,10 +12,12 @@
 #include "progress.hpp"
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
+#include "rodvv/harness/golden.hpp"
 #include "rodvv/harness/parallel_sweeps.hpp"
 #include "rodvv/harness/registry.hpp"
 #include "rodvv/harness/sweep.hpp"
 #include "rodvv/reports/csv.hpp"
+#include "rodvv/reports/golden_file.hpp"
 #include "rodvv/reports/json_io.hpp"
 #include "rodvv/reports/provenance.hpp"
 #include "rodvv/reports/report_document.hpp"
@@ -39,12 +41,28 @@ std::size_t worker_count(const CommonOptions& common) {
 
 // Runs each case at its default (or extended, or given) levels with the --set overrides applied.
 // All parameters of all cases are validated before the first level runs, so bad input costs nothing.
+// The goldens of the regression gates: --goldens (must exist), else the source tree's file when
+// there is one (a note on stderr otherwise: an installed rodvv has none).
+std::optional<harness::Goldens> load_goldens(const CommonOptions& common) {
+  if (common.goldens) {
+    if (!std::filesystem::is_regular_file(*common.goldens))
+      throw InputError("--goldens", fmt::format("invalid --goldens '{}': no such file", *common.goldens));
+    return reports::read_goldens(*common.goldens);
+  }
+  if (!std::filesystem::is_regular_file(RODVV_DEFAULT_GOLDENS)) {
+    fmt::print(stderr, "rodvv: note: no goldens file at {}: regression gates not evaluated\n", RODVV_DEFAULT_GOLDENS);
+    return std::nullopt;
+  }
+  return reports::read_goldens(RODVV_DEFAULT_GOLDENS);
+}
+
 std::vector<SweepResult> run_cases(const std::vector<const Case*>& cases, const CommonOptions& common,
-                                   const std::vector<double>* levels_override) {
+                                   const std::vector<double>* levels_override, bool regression_gates = true) {
   if (!(common.level_budget > 0.0 && common.level_budget <= 1e6))
     throw InputError("--level-budget", fmt::format("invalid --level-budget {}: must be a number of seconds in (0, 1e6]",
                                                    format_value(common.level_budget)));
   const std::size_t workers = worker_count(common);
+  const std::optional<harness::Goldens> goldens = regression_gates ? load_goldens(common) : std::nullopt;
   std::vector<harness::Parameters> parameters;
   for (const Case* c : cases) {
     harness::Parameters p = c->info.parameters;
@@ -67,8 +85,17 @@ std::vector<SweepResult> run_cases(const std::vector<const Case*>& cases, const 
     jobs.push_back({cases[i], std::move(parameters[i]), std::vector<double>(levels.begin(), levels.end())});
   }
   ProgressReporter progress(cases.size(), common.verbose);
-  return harness::run_sweeps(jobs, workers, common.level_budget, progress.level_callback(),
-                             [&progress](const SweepResult& result) { progress.case_finished(result); });
+  const harness::CaseAmendment regression = [&](std::size_t i, SweepResult& result) {
+    std::string why_not;
+    if (auto gate = harness::regression_gate(*cases[i], result, *goldens, &why_not))
+      result.gates.push_back(std::move(*gate));
+    else
+      result.skipped_gates.push_back("regression: " + why_not);
+  };
+  return harness::run_sweeps(
+      jobs, workers, common.level_budget, progress.level_callback(),
+      [&progress](const SweepResult& result) { progress.case_finished(result); },
+      goldens ? regression : harness::CaseAmendment{});
 }
 
 reports::ValidationReport make_report(std::vector<SweepResult> results) {
@@ -103,8 +130,11 @@ void write_outputs(const reports::ValidationReport& report, const std::optional<
 // parameters) has shown nothing: it is not a pass. Said on stderr, exit 1.
 int exit_code(const std::vector<SweepResult>& results) {
   std::vector<std::string> without_evidence;
+  // A regression gate says only that nothing changed: evidence is a verification gate.
   for (const auto& result : results)
-    if (result.gates.empty()) without_evidence.push_back(result.info.name);
+    if (std::none_of(result.gates.begin(), result.gates.end(),
+                     [](const auto& gate) { return gate.kind != harness::GateKind::Regression; }))
+      without_evidence.push_back(result.info.name);
   for (const auto& name : without_evidence)
     fmt::print(stderr, "rodvv: no evidence: no gate of '{}' was evaluated at these parameters and levels; "
                        "that is not a pass\n",
@@ -285,6 +315,73 @@ int report_command(const ReportOptions& options) {
   fmt::print("{}", render_gate_table(report.cases));
   fmt::print("report: {}\n", (std::filesystem::path(options.out_dir) / "index.html").string());
   return exit_code(report.cases);
+}
+
+int bless_command(const CommonOptions& options) {
+  const std::filesystem::path path(options.goldens ? *options.goldens : std::string(RODVV_DEFAULT_GOLDENS));
+  harness::Goldens goldens;
+  if (std::filesystem::exists(path)) goldens = reports::read_goldens(path);
+  else if (options.goldens)
+    throw InputError("--goldens", fmt::format("invalid --goldens '{}': no such file (bless updates an existing file; "
+                                              "without --goldens it writes the source tree's)",
+                                              *options.goldens));
+  const auto cases = harness::default_registry().select(options.cases);
+  auto results = run_cases(cases, options, nullptr, false);
+  std::size_t unchanged = 0, changed = 0, added = 0, refused = 0;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const auto& result = results[i];
+    const std::string& name = cases[i]->info.name;
+    if (!result.passed()) {
+      fmt::print("{:<48} NOT BLESSED: fails its verification gates (fix it, or bless what passes)\n", name);
+      ++refused;
+      continue;
+    }
+    harness::GoldenCase now = harness::golden_of(result);
+    const auto old = goldens.find(name);
+    if (old == goldens.end()) {
+      fmt::print("{:<48} new\n", name);
+      ++added;
+    } else {
+      auto changes = harness::compare_goldens(old->second, now);
+      std::erase_if(changes, [](const harness::GoldenChange& c) { return c.deviation == 0.0; });
+      bool levels_moved = old->second.levels.size() != now.levels.size();
+      for (std::size_t l = 0; !levels_moved && l < now.levels.size(); ++l)
+        levels_moved = old->second.levels[l].level != now.levels[l].level;
+      if (changes.empty() && !levels_moved) {
+        ++unchanged;
+      } else {
+        ++changed;
+        fmt::print("{:<48} changed{}\n", name, levels_moved ? " (levels differ)" : "");
+        std::sort(changes.begin(), changes.end(),
+                  [](const auto& a, const auto& b) { return a.deviation > b.deviation; });
+        const auto show = [](std::optional<double> v) { return v ? fmt::format("{:.10g}", *v) : std::string("-"); };
+        for (std::size_t k = 0; k < changes.size() && k < 5; ++k)
+          fmt::print("    {} = {:g} {}: value {} -> {}, error {} -> {} ({:.3g} x tolerance)\n",
+                     cases[i]->info.resolution.name, changes[k].level, changes[k].metric, show(changes[k].old_value),
+                     show(changes[k].new_value), show(changes[k].old_error), show(changes[k].new_error),
+                     changes[k].deviation);
+        if (changes.size() > 5) fmt::print("    ... and {} more values\n", changes.size() - 5);
+      }
+    }
+    goldens[name] = std::move(now);
+  }
+  std::size_t removed = 0;
+  if (options.cases.empty()) {  // blessing every case: goldens of cases that no longer exist go
+    for (auto it = goldens.begin(); it != goldens.end();) {
+      const bool known = std::any_of(cases.begin(), cases.end(), [&](const Case* c) { return c->info.name == it->first; });
+      if (known) {
+        ++it;
+      } else {
+        fmt::print("{:<48} removed (no such case)\n", it->first);
+        it = goldens.erase(it);
+        ++removed;
+      }
+    }
+  }
+  reports::write_goldens(path, goldens);
+  fmt::print(stderr, "bless: {} unchanged, {} changed, {} new, {} removed, {} not blessed; wrote {}\n", unchanged,
+             changed, added, removed, refused, path.string());
+  return refused ? kGateFailed : kPass;
 }
 
 }  // namespace rodvv::apps

@@ -19,6 +19,7 @@ struct CommonOptions {
   bool verbose = false;                  // per-level progress
   double level_budget = harness::kDefaultLevelBudgetSeconds;  // --level-budget: seconds per level
   std::optional<int> jobs;  // -j: levels run at once; unset: the machine's core count
+  std::optional<std::string> goldens;  // --goldens: the regression gates' file; unset: the source tree's
 };
 
 struct RunOptions {
@@ -58,6 +59,7 @@ int run_command(const RunOptions& options);
 int sweep_command(const SweepOptions& options);
 int report_command(const ReportOptions& options);
 int check_command(const CheckOptions& options);
+int bless_command(const CommonOptions& options);
 
 // Shared by the commands: exit code of finished results (no evidence is not a pass), and the
 // --json / --csv outputs.

@@ -32,6 +32,9 @@ void add_common(CLI::App* command, rodvv::apps::CommonOptions& common, bool case
   command->add_option("-j,--jobs", common.jobs,
                       "levels run at once on worker threads, in [1, 1024] (default: the core count); the results "
                       "are those of -j 1, only the times differ");
+  command->add_option("--goldens", common.goldens,
+                      "the regression gates' goldens file (default: the source tree's tests/goldens/default-levels.json, "
+                      "skipped with a note if absent); written by `rodvv bless`");
 }
 
 }  // namespace
@@ -106,11 +109,20 @@ int main(int argc, char** argv) {
                      "merge the JSON files in this directory (from `rodvv run --json`) instead of running");
   report->add_flag("!--no-plots", report_options.plots, "skip the matplotlib plots");
 
+  CommonOptions bless_options;
+  auto* bless = app.add_subcommand("bless", "run cases at their default levels and parameters and write their metrics "
+                                            "as the goldens of the regression gates, printing what moved");
+  bless->add_option("cases", bless_options.cases, "case names, family or group prefixes or globs; default: all");
+  bless->add_flag("-v,--verbose", bless_options.verbose, "progress per level on stderr");
+  bless->add_option("-j,--jobs", bless_options.jobs, "levels run at once, in [1, 1024] (default: the core count)");
+  bless->add_option("--goldens", bless_options.goldens,
+                    "the goldens file to update (default: the source tree's tests/goldens/default-levels.json)");
+
   // An unknown first word is named (CLI11 would only say that a subcommand is required).
   if (argc >= 2 && argv[1][0] != '-') {
     const std::string word = argv[1];
-    if (word != "list" && word != "run" && word != "sweep" && word != "report" && word != "check") {
-      fmt::print(stderr, "rodvv: error: unknown command '{}': expected list, run, sweep, report or check (rodvv --help)\n",
+    if (word != "list" && word != "run" && word != "sweep" && word != "report" && word != "check" && word != "bless") {
+      fmt::print(stderr, "rodvv: error: unknown command '{}': expected list, run, sweep, report, check or bless (rodvv --help)\n",
                  word);
       return kBadInput;
     }
@@ -128,6 +140,7 @@ int main(int argc, char** argv) {
     if (*sweep) return sweep_command(sweep_options);
     if (*report) return report_command(report_options);
     if (*check) return check_command(check_options);
+    if (*bless) return bless_command(bless_options);
   } catch (const rodvv::InputError& error) {
     fmt::print(stderr, "rodvv: error: {}\n", error.what());
     return kBadInput;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -196,6 +197,8 @@ GateResult evaluate_bound(const GateSpec& gate, const SweepResult& sweep) {
 }  // namespace
 
 GateResult evaluate_gate(const GateSpec& gate, const SweepResult& sweep) {
+  if (gate.kind == GateKind::Regression)
+    throw std::logic_error("evaluate_gate: regression gates come from the goldens (golden.hpp), not from a GateSpec");
   return gate.kind == GateKind::Order ? evaluate_order(gate, sweep) : evaluate_bound(gate, sweep);
 }
 

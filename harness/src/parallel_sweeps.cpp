@@ -12,7 +12,8 @@
 namespace rodvv::harness {
 
 std::vector<SweepResult> run_sweeps(std::span<const SweepJob> jobs, std::size_t workers, double level_budget_seconds,
-                                    const ProgressCallback& on_level, const CaseCallback& on_case) {
+                                    const ProgressCallback& on_level, const CaseCallback& on_case,
+                                    const CaseAmendment& amend) {
   if (workers < 1) throw InputError("jobs", "invalid number of jobs 0: must be at least 1");
   for (const SweepJob& job : jobs) {
     validate_levels(*job.c, job.levels);
@@ -60,6 +61,7 @@ std::vector<SweepResult> run_sweeps(std::span<const SweepJob> jobs, std::size_t 
         }
         results[task.job] = finish_sweep(*job.c, job.parameters, std::move(levels));
         results[task.job]->wall_seconds = wall;
+        if (amend) amend(task.job, *results[task.job]);
         for (; next_report < jobs.size() && results[next_report]; ++next_report)
           if (on_case) on_case(*results[next_report]);
       } catch (...) {

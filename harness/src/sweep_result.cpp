@@ -16,6 +16,7 @@ const char* to_string(GateKind kind) {
     case GateKind::Order: return "order";
     case GateKind::UpperBound: return "upper-bound";
     case GateKind::LowerBound: return "lower-bound";
+    case GateKind::Regression: return "regression";
   }
   return "unknown";
 }

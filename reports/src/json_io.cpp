@@ -283,7 +283,8 @@ class Reader {
 constexpr harness::MetricKind kMetricKinds[] = {
     harness::MetricKind::Error, harness::MetricKind::Invariant, harness::MetricKind::Diagnostic};
 constexpr harness::GateKind kGateKinds[] = {
-    harness::GateKind::Order, harness::GateKind::UpperBound, harness::GateKind::LowerBound};
+    harness::GateKind::Order, harness::GateKind::UpperBound, harness::GateKind::LowerBound,
+    harness::GateKind::Regression};
 constexpr harness::ResolutionScale kScales[] = {harness::ResolutionScale::StepSize,
                                                 harness::ResolutionScale::Count};
 

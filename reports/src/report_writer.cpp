@@ -84,6 +84,10 @@ ScriptRun run_plot_script(const std::string& python, const fs::path& script,
 
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
+  // Our stderr, as the child's descriptor 3 (before 1 and 2 go to the log): the script's progress
+  // bar reaches the user while its messages and tracebacks stay in the log.
+  constexpr int kProgressFd = 3;
+  posix_spawn_file_actions_adddup2(&actions, STDERR_FILENO, kProgressFd);
   const std::string log_path = log.string();
   posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log_path.c_str(),
@@ -91,8 +95,8 @@ ScriptRun run_plot_script(const std::string& python, const fs::path& script,
   posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
 
   std::string arg0 = python, arg1 = script.string(), arg2 = results.string(),
-              arg3 = plots_dir.string();
-  char* argv[] = {arg0.data(), arg1.data(), arg2.data(), arg3.data(), nullptr};
+              arg3 = plots_dir.string(), arg4 = "--progress-fd=" + std::to_string(kProgressFd);
+  char* argv[] = {arg0.data(), arg1.data(), arg2.data(), arg3.data(), arg4.data(), nullptr};
   pid_t pid = 0;
   const int spawn_error = posix_spawnp(&pid, python.c_str(), &actions, nullptr, argv, environ);
   posix_spawn_file_actions_destroy(&actions);

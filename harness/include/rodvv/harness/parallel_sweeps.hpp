@@ -23,6 +23,9 @@ struct SweepJob {
 };
 
 using CaseCallback = std::function<void(const SweepResult&)>;
+// Applied to each finished case (its index in jobs) before on_case sees it: e.g. its regression
+// gate (golden.hpp).
+using CaseAmendment = std::function<void(std::size_t job, SweepResult&)>;
 
 // Validates every job's levels and parameters first (InputError before anything runs). An
 // InputError thrown inside a level that names an input of its case (run_level) stops the workers
@@ -30,6 +33,7 @@ using CaseCallback = std::function<void(const SweepResult&)>;
 // A case's wall_seconds is the sum of its levels' wall times (its levels may overlap in time).
 std::vector<SweepResult> run_sweeps(std::span<const SweepJob> jobs, std::size_t workers,
                                     double level_budget_seconds = kDefaultLevelBudgetSeconds,
-                                    const ProgressCallback& on_level = {}, const CaseCallback& on_case = {});
+                                    const ProgressCallback& on_level = {}, const CaseCallback& on_case = {},
+                                    const CaseAmendment& amend = {});
 
 }  // namespace rodvv::harness

@@ -73,7 +73,9 @@ struct MetricAnalysis {
 // Order: least-squares order of a metric's error in [lower, upper] (two-sided, MOOSE mms style).
 // UpperBound / LowerBound: a metric's value (its error, or its computed value for invariants and
 // diagnostics) at the finest level or at every level lies below / above a bound.
-enum class GateKind { Order, UpperBound, LowerBound };
+// Regression: a case's metrics against its stored goldens (golden.hpp), measured = the largest deviation
+// over its tolerance, upper = 1.
+enum class GateKind { Order, UpperBound, LowerBound, Regression };
 enum class GateScope { FinestLevel, AllLevels };
 
 struct GateResult {
