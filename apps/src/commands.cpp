@@ -39,8 +39,6 @@ std::size_t worker_count(const CommonOptions& common) {
   return std::size_t(*common.jobs);
 }
 
-// Runs each case at its default (or extended, or given) levels with the --set overrides applied.
-// All parameters of all cases are validated before the first level runs, so bad input costs nothing.
 // The goldens of the regression gates: --goldens (must exist), else the source tree's file when
 // there is one (a note on stderr otherwise: an installed rodvv has none).
 std::optional<harness::Goldens> load_goldens(const CommonOptions& common) {
@@ -56,6 +54,9 @@ std::optional<harness::Goldens> load_goldens(const CommonOptions& common) {
   return reports::read_goldens(RODVV_DEFAULT_GOLDENS);
 }
 
+// Runs each case at its default (or extended, or given) levels with the --set overrides applied, on
+// -j worker threads, and adds its regression gate (unless regression_gates is false: bless).
+// All parameters of all cases are validated before the first level runs, so bad input costs nothing.
 std::vector<SweepResult> run_cases(const std::vector<const Case*>& cases, const CommonOptions& common,
                                    const std::vector<double>* levels_override, bool regression_gates = true) {
   if (!(common.level_budget > 0.0 && common.level_budget <= 1e6))
@@ -86,11 +87,7 @@ std::vector<SweepResult> run_cases(const std::vector<const Case*>& cases, const 
   }
   ProgressReporter progress(cases.size(), common.verbose);
   const harness::CaseAmendment regression = [&](std::size_t i, SweepResult& result) {
-    std::string why_not;
-    if (auto gate = harness::regression_gate(*cases[i], result, *goldens, &why_not))
-      result.gates.push_back(std::move(*gate));
-    else
-      result.skipped_gates.push_back("regression: " + why_not);
+    harness::add_regression_gate(*cases[i], result, *goldens);
   };
   return harness::run_sweeps(
       jobs, workers, common.level_budget, progress.level_callback(),

@@ -139,15 +139,13 @@ std::optional<GateResult> regression_gate(const Case& c, const SweepResult& resu
   return gate;
 }
 
-void apply_goldens(std::span<const Case* const> cases, std::vector<SweepResult>& results, const Goldens& goldens,
-                   const GoldenTolerance& tolerance) {
-  for (std::size_t i = 0; i < results.size() && i < cases.size(); ++i) {
-    std::string why_not;
-    if (auto gate = regression_gate(*cases[i], results[i], goldens, &why_not, tolerance))
-      results[i].gates.push_back(std::move(*gate));
-    else
-      results[i].skipped_gates.push_back("regression: " + why_not);
-  }
+void add_regression_gate(const Case& c, SweepResult& result, const Goldens& goldens,
+                         const GoldenTolerance& tolerance) {
+  std::string why_not;
+  if (auto gate = regression_gate(c, result, goldens, &why_not, tolerance))
+    result.gates.push_back(std::move(*gate));
+  else
+    result.skipped_gates.push_back("regression: " + why_not);
 }
 
 }  // namespace rodvv::harness

@@ -16,7 +16,6 @@
 // The gate's measured value is the largest deviation over its tolerance (<= 1 passes).
 #include <map>
 #include <optional>
-#include <span>
 #include <string>
 #include <vector>
 
@@ -70,8 +69,9 @@ std::vector<GoldenChange> compare_goldens(const GoldenCase& golden, const Golden
 std::optional<GateResult> regression_gate(const Case& c, const SweepResult& result, const Goldens& goldens,
                                           std::string* why_not, const GoldenTolerance& tolerance = {});
 
-// Appends the regression gate (or the reason it was skipped) to each result.
-void apply_goldens(std::span<const Case* const> cases, std::vector<SweepResult>& results, const Goldens& goldens,
-                   const GoldenTolerance& tolerance = {});
+// Appends the case's regression gate to result.gates, or the reason it was skipped to
+// result.skipped_gates ("regression: ...").
+void add_regression_gate(const Case& c, SweepResult& result, const Goldens& goldens,
+                         const GoldenTolerance& tolerance = {});
 
 }  // namespace rodvv::harness
