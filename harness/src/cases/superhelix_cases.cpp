@@ -1104,6 +1104,7 @@ void register_superhelix_cases(Registry& registry) {
   }
   superhelix_cases::add_bathe_bolourchi(registry);
   superhelix_cases::add_lateral_torsional(registry);
+  superhelix_cases::add_spinning_clamp_oracle(registry);
 }
 
 }  // namespace rodvv::harness
