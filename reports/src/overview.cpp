@@ -13,8 +13,8 @@ namespace rodvv::reports {
 
 namespace {
 
-// Signed distance of `measured` inside the bound: decades when both are positive, else relative
-// to the bound's magnitude (or absolute for a zero bound).
+// Signed distance of `measured` inside the bound: decades when both are positive, else relative to
+// the bound's magnitude; none for a zero bound (a sign gate).
 std::optional<double> bound_headroom(double inside_minus_outside_sign, double bound, double measured) {
   if (bound == 0.0) return std::nullopt;  // a sign gate: passes or fails, no scale to measure against
   if (bound > 0.0 && measured > 0.0) return inside_minus_outside_sign * std::log10(bound / measured);
@@ -181,12 +181,18 @@ void append_order_panel(std::string& out, const ValidationReport& report, const 
   }
 }
 
+// Regression gates (golden.hpp) say whether anything changed, not how close a result is to being
+// wrong: they stay out of the figure (the attention table lists them when they fail or moved).
+bool in_bound_panel(const GateMargin& m) {
+  return m.margin && m.kind != harness::GateKind::Order && m.kind != harness::GateKind::Regression;
+}
+
 // Panel 2: headroom of bound gates in decades, one row per family.
 void append_bound_panel(std::string& out, const ValidationReport& report, const std::vector<GateMargin>& margins,
                         const std::vector<std::string>& case_ids) {
   std::vector<std::string> families;
   for (const auto& m : margins) {
-    if (m.kind == harness::GateKind::Order || !m.margin) continue;
+    if (!in_bound_panel(m)) continue;
     const auto& family = report.cases[m.case_index].info.family;
     if (std::find(families.begin(), families.end(), family) == families.end()) families.push_back(family);
   }
@@ -212,7 +218,7 @@ void append_bound_panel(std::string& out, const ValidationReport& report, const 
   }
   std::map<std::string, int> seen;
   for (const auto& m : margins) {
-    if (m.kind == harness::GateKind::Order || !m.margin) continue;
+    if (!in_bound_panel(m)) continue;
     const auto& family = report.cases[m.case_index].info.family;
     const auto f = static_cast<double>(std::find(families.begin(), families.end(), family) - families.begin());
     const int k = seen[family]++;

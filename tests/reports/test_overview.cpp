@@ -118,6 +118,10 @@ TEST(ReportsOverview, FigureHasOnePointPerGateWithAMarginLinkedToItsCase) {
   EXPECT_EQ(count(svg, "clipped"), 1u);
   EXPECT_NE(svg.find("fam-a/&quot;quoted&quot; &amp; &lt;odd&gt;"), std::string::npos);
   EXPECT_EQ(svg.find("<odd>"), std::string::npos);
+  // A regression gate (golden.hpp) is not drawn.
+  ValidationReport with_regression = report;
+  with_regression.cases[0].gates.push_back(gate("regression", GateKind::Regression, true, 0.0, {}, 1.0));
+  EXPECT_EQ(count(overview_svg(with_regression, gate_margins(with_regression), {"case-a", "case-b"}), "<circle"), 5u);
   // Unbounded headroom too, at the right edge.
   report.cases[0].gates[0].measured = 0.0;
   EXPECT_EQ(count(overview_svg(report, gate_margins(report), {"case-a", "case-b"}), "pass clipped"), 1u);

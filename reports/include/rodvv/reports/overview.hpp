@@ -60,7 +60,8 @@ std::string case_filter_attributes(const harness::SweepResult& result);
 
 // The overview figure as inline SVG: observed against theoretical order for order gates (the
 // diagonal is "as predicted", the window's edges as error bars), and the headroom of bound gates in
-// decades per family (the closest calls sit near the zero line). Each point links to its case
+// decades per family (the closest calls sit near the zero line); regression gates are not drawn
+// (they say whether a result changed, not how near it is to wrong). Each point links to its case
 // (case_ids[i] is the element id of case i) and carries data-family / data-status attributes for
 // the page's filters, and a <title> tooltip naming case, gate, measured value and bounds.
 std::string overview_svg(const ValidationReport& report, const std::vector<GateMargin>& margins,
