@@ -110,15 +110,16 @@ void clothoid_benchmark(benchmark::State& bench, sh::DynamicsPath path) {
 void BM_ClothoidStepRecursive(benchmark::State& bench) { clothoid_benchmark(bench, sh::DynamicsPath::Recursive); }
 void BM_ClothoidStepDense(benchmark::State& bench) { clothoid_benchmark(bench, sh::DynamicsPath::Dense); }
 
-void BM_Statics(benchmark::State& bench) {
-  const auto n = static_cast<std::size_t>(bench.range(0));
-  sh::RodModel model = model_of(n);
+// A heavy cantilever's statics (2 load steps) by `solve` at N = bench.range(0).
+template <class Solve>
+void statics_benchmark(benchmark::State& bench, Solve solve) {
+  sh::RodModel model = model_of(static_cast<std::size_t>(bench.range(0)));
   model.gravity = Vec3(0.0, 0.0, -3.0);
   sh::StaticOptions options;
   options.load_steps = 2;
   std::size_t iterations = 0;
   for (auto _ : bench) {
-    const auto result = sh::solve_static(model, options);
+    const auto result = solve(model, options);
     benchmark::DoNotOptimize(result.q.data());
     iterations = result.iterations;
   }
@@ -126,22 +127,16 @@ void BM_Statics(benchmark::State& bench) {
   bench.counters["newton_iterations"] = static_cast<double>(iterations);
 }
 
+void BM_Statics(benchmark::State& bench) {
+  statics_benchmark(bench, [](const sh::RodModel& m, const sh::StaticOptions& o) { return sh::solve_static(m, o); });
+}
+
 // The super-clothoid's statics on the same heavy rod, on its central-difference Jacobian (issue 17's
 // target, under 200 ms at N = 256, needs exact derivatives: 2.4 s at N = 32, 8.3 s at N = 64, O(N^2)).
 void BM_ClothoidStatics(benchmark::State& bench) {
-  const auto n = static_cast<std::size_t>(bench.range(0));
-  sh::RodModel model = model_of(n);
-  model.gravity = Vec3(0.0, 0.0, -3.0);
-  sh::StaticOptions options;
-  options.load_steps = 2;
-  std::size_t iterations = 0;
-  for (auto _ : bench) {
-    const auto result = sh::solve_clothoid_static(model, options);
-    benchmark::DoNotOptimize(result.q.data());
-    iterations = result.iterations;
-  }
-  bench.SetComplexityN(bench.range(0));
-  bench.counters["newton_iterations"] = static_cast<double>(iterations);
+  statics_benchmark(bench, [](const sh::RodModel& m, const sh::StaticOptions& o) {
+    return sh::solve_clothoid_static(m, o);
+  });
 }
 
 // The heavy cantilever's equilibrium at N (shared by the Jacobian and inverse benchmarks).
