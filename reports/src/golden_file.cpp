@@ -64,9 +64,12 @@ harness::Goldens read_goldens(const std::filesystem::path& path) {
     throw InputError(kParameter, path.string() + ": not valid JSON: " + e.what());
   }
   const Reader r(path.string());
-  if (!doc.is_object() || doc.value("format", "") != kFormat)
+  // Types checked before reading: nlohmann's value() throws on a wrong type (an internal error).
+  const auto format = doc.is_object() ? doc.find("format") : doc.end();
+  if (!doc.is_object() || format == doc.end() || !format->is_string() || *format != kFormat)
     r.fail("top level", std::string("expected an object with \"format\": \"") + kFormat + "\"");
-  if (doc.value("version", 0) != kVersion)
+  const auto version = doc.find("version");
+  if (version == doc.end() || !version->is_number_integer() || *version != kVersion)
     r.fail("version", "expected " + std::to_string(kVersion) + " (written by another rodvv: rodvv bless rewrites it)");
   const auto cases = doc.find("cases");
   if (cases == doc.end() || !cases->is_object()) r.fail("cases", "expected an object of cases");
@@ -82,7 +85,10 @@ harness::Goldens read_goldens(const std::filesystem::path& path) {
         r.fail(at, "expected {\"level\", \"failed\", \"metrics\"}");
       harness::GoldenLevel level;
       level.level = r.number(l["level"], at + ".level");
-      level.failed = l.value("failed", false);
+      if (const auto failed = l.find("failed"); failed != l.end()) {
+        if (!failed->is_boolean()) r.fail(at + ".failed", "expected true or false");
+        level.failed = failed->get<bool>();
+      }
       for (const auto& [metric, sample] : l["metrics"].items()) {
         const std::string m = at + ".metrics." + metric;
         if (!sample.is_object() || !sample.contains("computed")) r.fail(m, "expected {\"computed\", ...}");

@@ -2,7 +2,8 @@
 """Regression gates end to end (issue 13, class 6): `rodvv run` against a copy of the tree's goldens
 passes; the same copy with one error moved by 10 % - the size of change a verification bound of twice
 the measured constant lets through - fails the case (exit 1, the regression gate named); `rodvv bless`
-on the copy prints what moved and restores it; a malformed goldens file is bad input (exit 2).
+on the copy prints what moved and restores it; a malformed goldens file is bad input (exit 2, the
+field named), whatever is wrong in it.
 
 usage: golden_regression.py <rodvv> <tree goldens> <work dir>
 """
@@ -54,11 +55,20 @@ def main(argv):
         if json.load(f)["cases"][CASE] != json.load(g)["cases"][CASE]:
             failures.append("bless did not restore the tree's goldens of the case")
 
-    with open(copy, "w") as f:
-        f.write('{"format": "rodvv goldens", "version": 1, "cases": {"x": [{"level": "abc", "metrics": {}}]}}')
-    code, out = run(rodvv, "run", CASE, "--goldens", copy)
-    if code != 2 or "cases.x[0].level" not in out:
-        failures.append(f"malformed goldens: expected exit 2 naming the field, got {code}:\n{out}")
+    # Malformed files, each wrong in one field's type or value: exit 2 naming it (never exit 3).
+    for text, field in [
+        ('{"format": "rodvv goldens", "version": 1, "cases": {"x": [{"level": "abc", "metrics": {}}]}}', "cases.x[0].level"),
+        ('{"format": 5}', "top level"),
+        ('[1, 2]', "top level"),
+        ('{"format": "rodvv goldens", "version": "1", "cases": {}}', "version"),
+        ('{"format": "rodvv goldens", "version": 1, "cases": {"x": [{"level": 1, "failed": 3, "metrics": {}}]}}',
+         "cases.x[0].failed"),
+    ]:
+        with open(copy, "w") as f:
+            f.write(text)
+        code, out = run(rodvv, "run", CASE, "--goldens", copy)
+        if code != 2 or field not in out:
+            failures.append(f"malformed goldens {text}: expected exit 2 naming {field}, got {code}:\n{out}")
 
     for f in failures:
         print("FAIL:", f)
