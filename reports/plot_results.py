@@ -656,10 +656,10 @@ class Progress:
             except OSError:
                 self.stream = None
 
-    def step(self, count=1):
+    def step(self):
         if self.stream is None or self.total == 0:
             return
-        self.done += count
+        self.done += 1
         if self.tty:
             width = 30
             filled = width * self.done // self.total

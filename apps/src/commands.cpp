@@ -64,7 +64,7 @@ std::vector<SweepResult> run_cases(const std::vector<const Case*>& cases, const 
                                                    format_value(common.level_budget)));
   const std::size_t workers = worker_count(common);
   const std::optional<harness::Goldens> goldens = regression_gates ? load_goldens(common) : std::nullopt;
-  std::vector<harness::Parameters> parameters;
+  std::vector<harness::SweepJob> jobs;
   for (const Case* c : cases) {
     harness::Parameters p = c->info.parameters;
     for (const auto& assignment : common.assignments) {
@@ -75,15 +75,10 @@ std::vector<SweepResult> run_cases(const std::vector<const Case*>& cases, const 
       }
     }
     if (c->check_parameters) c->check_parameters(p);
-    harness::validate_levels(*c, levels_override ? std::span<const double>(*levels_override)
-                                                 : harness::sweep_levels(*c, common.extended));
-    parameters.push_back(std::move(p));
-  }
-  std::vector<harness::SweepJob> jobs;
-  for (std::size_t i = 0; i < cases.size(); ++i) {
     const auto levels = levels_override ? std::span<const double>(*levels_override)
-                                        : harness::sweep_levels(*cases[i], common.extended);
-    jobs.push_back({cases[i], std::move(parameters[i]), std::vector<double>(levels.begin(), levels.end())});
+                                        : harness::sweep_levels(*c, common.extended);
+    harness::validate_levels(*c, levels);
+    jobs.push_back({c, std::move(p), std::vector<double>(levels.begin(), levels.end())});
   }
   ProgressReporter progress(cases.size(), common.verbose);
   const harness::CaseAmendment regression = [&](std::size_t i, SweepResult& result) {

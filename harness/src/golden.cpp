@@ -10,12 +10,6 @@ namespace rodvv::harness {
 
 namespace {
 
-const MetricSpec* spec_of(const CaseInfo& info, const std::string& name) {
-  for (const auto& spec : info.metrics)
-    if (spec.name == name) return &spec;
-  return nullptr;
-}
-
 double magnitude(const GoldenSample& s) {
   double m = std::abs(s.computed);
   if (s.reference) m = std::max(m, std::abs(*s.reference));
@@ -50,7 +44,7 @@ GoldenCase golden_of(const SweepResult& result) {
     g.level = level.level;
     g.failed = level.failure.has_value();
     for (const auto& [name, sample] : level.metrics) {
-      const MetricSpec* spec = spec_of(result.info, name);
+      const MetricSpec* spec = find_metric_spec(result.info, name);
       if (spec && spec->kind == MetricKind::Diagnostic) continue;
       g.metrics[name] = {sample.computed, sample.reference, sample.error, sample.scale};
     }
@@ -103,11 +97,8 @@ std::optional<GateResult> regression_gate(const Case& c, const SweepResult& resu
   };
   const auto found = goldens.find(c.info.name);
   if (found == goldens.end()) return skip("no golden values for this case (rodvv bless writes them)");
-  const auto& defaults = c.info.parameters;
-  bool at_defaults = result.info.parameters.size() == defaults.size();
-  for (std::size_t i = 0; at_defaults && i < defaults.size(); ++i)
-    at_defaults = result.info.parameters[i].name == defaults[i].name && result.info.parameters[i].value == defaults[i].value;
-  if (!at_defaults) return skip("goldens hold the default parameters");
+  // Unit scales too: the goldens hold numbers in the case's units.
+  if (!at_default_parameters(c.info, result.info.parameters, false)) return skip("goldens hold the default parameters");
   const auto changes = compare_goldens(found->second, golden_of(result), tolerance);
   std::size_t levels = 0;
   for (const auto& level : result.levels) levels += find_level(found->second, level.level) ? 1 : 0;

@@ -187,10 +187,7 @@ SweepResult finish_sweep(const Case& c, const Parameters& parameters, std::vecto
   result.levels = std::move(levels);
   result.analyses = analyse_levels(c, result.levels);
   // A measured bound holds at the default parameters; changing a unit scale alone keeps it.
-  bool at_defaults = parameters.size() == c.info.parameters.size();
-  for (std::size_t i = 0; at_defaults && i < parameters.size(); ++i)
-    at_defaults = parameters[i].name == c.info.parameters[i].name &&
-                  (parameters[i].value == c.info.parameters[i].value || c.info.parameters[i].unit_scale);
+  const bool at_defaults = at_default_parameters(c.info, parameters, true);
   for (const GateSpec& gate : c.gates) {
     if (gate.measured && !at_defaults)
       result.skipped_gates.push_back(gate.name + ": bound measured at the default parameters");

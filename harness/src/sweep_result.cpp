@@ -29,4 +29,21 @@ const char* to_string(ResolutionScale scale) {
   return "unknown";
 }
 
+const MetricSpec* find_metric_spec(const CaseInfo& info, const std::string& name) {
+  for (const auto& spec : info.metrics)
+    if (spec.name == name) return &spec;
+  return nullptr;
+}
+
+bool at_default_parameters(const CaseInfo& info, const std::vector<Parameter>& parameters, bool unit_scales_free) {
+  if (parameters.size() != info.parameters.size()) return false;
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    const Parameter& given = parameters[i];
+    const Parameter& defaults = info.parameters[i];
+    if (given.name != defaults.name) return false;
+    if (given.value != defaults.value && !(unit_scales_free && defaults.unit_scale)) return false;
+  }
+  return true;
+}
+
 }  // namespace rodvv::harness

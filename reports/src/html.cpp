@@ -118,13 +118,14 @@ std::string badge(bool passed) {
          status_text(passed) + "</span>";
 }
 
-void append_table(std::string& out, const Table& table) {
+// row_attributes: empty, or one attribute string per row (" class=... data-...").
+void append_table(std::string& out, const Table& table, const std::vector<std::string>& row_attributes = {}) {
   out += "<div class=\"scroll\"><table>\n<thead><tr>";
   for (const auto& h : table.header) out += "<th>" + escape_xml(h) + "</th>";
   out += "</tr></thead>\n<tbody>\n";
-  for (const auto& row : table.rows) {
-    out += "<tr>";
-    for (const auto& cell : row)
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    out += "<tr" + (row_attributes.empty() ? std::string() : row_attributes[r]) + ">";
+    for (const auto& cell : table.rows[r])
       out += std::string("<td") + css_class(cell.style) + ">" + escape_xml(cell.text) + "</td>";
     out += "</tr>\n";
   }
@@ -215,6 +216,9 @@ void append_case(std::string& out, const harness::SweepResult& result, const std
   out += "</section>\n";
 }
 
+std::string family_label(const std::string& f) { return f.empty() ? std::string("(no family)") : f; }
+std::string group_label(const std::string& g) { return g.empty() ? std::string("(ungrouped)") : g; }
+
 // Family, status and name filters, sticky at the top of the page (script: kFilterScript).
 void append_filter_bar(std::string& out, const ValidationReport& report, const std::vector<CaseGroup>& groups) {
   const ReportTotals sum = totals(report);
@@ -223,7 +227,7 @@ void append_filter_bar(std::string& out, const ValidationReport& report, const s
   for (std::size_t g = 0; g < groups.size(); ++g)
     if (g == 0 || groups[g].family != groups[g - 1].family)
       out += "<option value=\"" + escape_xml_attribute(groups[g].family) + "\">" +
-             escape_xml(groups[g].family.empty() ? "(no family)" : groups[g].family) + "</option>";
+             escape_xml(family_label(groups[g].family)) + "</option>";
   out += "</select></label>\n<label>Status<select id=\"filter-status\"><option value=\"\">all</option>"
          "<option value=\"fail\">failed (" + std::to_string(sum.cases - sum.cases_passed) +
          ")</option><option value=\"pass\">passed (" + std::to_string(sum.cases_passed) +
@@ -232,19 +236,13 @@ void append_filter_bar(std::string& out, const ValidationReport& report, const s
          "<span id=\"filter-count\"></span>\n</form>\n";
 }
 
-// Rows of a table that belong to cases: filterable by the page's filters.
+// Rows of a table that belong to cases (row_cases[r]: the case of row r): filterable by the page's filters.
 void append_case_rows_table(std::string& out, const Table& table, const ValidationReport& report,
                             const std::vector<std::size_t>& row_cases) {
-  out += "<div class=\"scroll\"><table>\n<thead><tr>";
-  for (const auto& h : table.header) out += "<th>" + escape_xml(h) + "</th>";
-  out += "</tr></thead>\n<tbody>\n";
-  for (std::size_t r = 0; r < table.rows.size(); ++r) {
-    out += "<tr class=\"filterable\"" + case_filter_attributes(report.cases[row_cases[r]]) + ">";
-    for (const auto& cell : table.rows[r])
-      out += std::string("<td") + css_class(cell.style) + ">" + escape_xml(cell.text) + "</td>";
-    out += "</tr>\n";
-  }
-  out += "</tbody></table></div>\n";
+  std::vector<std::string> attributes;
+  for (const std::size_t c : row_cases)
+    attributes.push_back(" class=\"filterable\"" + case_filter_attributes(report.cases[c]));
+  append_table(out, table, attributes);
 }
 
 // The first screen after the status: the overview figure, then failed gates and the closest
@@ -294,8 +292,6 @@ std::string render_html(const ValidationReport& report, const PlotManifest& plot
     family_ids.push_back(ids.make("family-", g.family));
     group_ids.push_back(ids.make("group-", g.family + "-" + g.group));
   }
-  auto family_label = [](const std::string& f) { return f.empty() ? std::string("(no family)") : f; };
-  auto group_label = [](const std::string& g) { return g.empty() ? std::string("(ungrouped)") : g; };
 
   std::string out;
   out.reserve(64 * 1024);

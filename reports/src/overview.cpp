@@ -13,18 +13,22 @@ namespace rodvv::reports {
 
 namespace {
 
+// A margin and its unit: decades (log10 of a ratio) or not (order units, relative distance).
+struct Headroom {
+  double value;
+  bool in_decades;
+};
+
 // Signed distance of `measured` inside the bound: decades when both are positive, else relative to
 // the bound's magnitude; none for a zero bound (a sign gate).
-std::optional<double> bound_headroom(double inside_minus_outside_sign, double bound, double measured) {
+std::optional<Headroom> bound_headroom(double inside_minus_outside_sign, double bound, double measured) {
   if (bound == 0.0) return std::nullopt;  // a sign gate: passes or fails, no scale to measure against
-  if (bound > 0.0 && measured > 0.0) return inside_minus_outside_sign * std::log10(bound / measured);
-  if (bound > 0.0 && measured == 0.0 && inside_minus_outside_sign > 0.0) return kUnboundedMargin;
-  return inside_minus_outside_sign * (bound - measured) / std::abs(bound);
+  if (bound > 0.0 && measured > 0.0) return Headroom{inside_minus_outside_sign * std::log10(bound / measured), true};
+  if (bound > 0.0 && measured == 0.0 && inside_minus_outside_sign > 0.0) return Headroom{kUnboundedMargin, true};
+  return Headroom{inside_minus_outside_sign * (bound - measured) / std::abs(bound), false};
 }
 
-}  // namespace
-
-std::optional<double> gate_margin(const harness::GateResult& gate) {
+std::optional<Headroom> headroom_of(const harness::GateResult& gate) {
   if (!gate.measured || !std::isfinite(*gate.measured)) return std::nullopt;
   const double m = *gate.measured;
   if (gate.kind == harness::GateKind::Order) {
@@ -32,17 +36,24 @@ std::optional<double> gate_margin(const harness::GateResult& gate) {
     double margin = kUnboundedMargin;
     if (gate.lower) margin = std::min(margin, m - *gate.lower);
     if (gate.upper) margin = std::min(margin, *gate.upper - m);
-    return margin;
+    return Headroom{margin, false};
   }
   // Bound gates: the one bound of their kind, or the tighter of both when a window is given.
-  std::optional<double> margin;
+  std::optional<Headroom> tightest;
   for (const auto& [bound, sign] : {std::pair{gate.upper, +1.0}, std::pair{gate.lower, -1.0}}) {
     if (!bound) continue;
     const auto headroom = bound_headroom(sign, *bound, m);
     if (!headroom) return std::nullopt;
-    margin = margin ? std::min(*margin, *headroom) : *headroom;
+    if (!tightest || headroom->value < tightest->value) tightest = headroom;
   }
-  return margin;
+  return tightest;
+}
+
+}  // namespace
+
+std::optional<double> gate_margin(const harness::GateResult& gate) {
+  if (const auto headroom = headroom_of(gate)) return headroom->value;
+  return std::nullopt;
 }
 
 std::string case_filter_attributes(const harness::SweepResult& result) {
@@ -62,12 +73,10 @@ std::vector<GateMargin> gate_margins(const ValidationReport& report) {
       entry.gate_index = g;
       entry.kind = gate.kind;
       entry.passed = gate.passed;
-      entry.margin = gate_margin(gate);
       entry.measured = gate.measured && std::isfinite(*gate.measured);
-      if (entry.measured) {
-        const double m = *gate.measured;
-        entry.in_decades = gate.kind != harness::GateKind::Order && m >= 0.0 && (!gate.upper || *gate.upper > 0.0) &&
-                           (!gate.lower || (*gate.lower > 0.0 && m > 0.0));
+      if (const auto headroom = headroom_of(gate)) {
+        entry.margin = headroom->value;
+        entry.in_decades = headroom->in_decades;
       }
       // order_gate and order_range_gate (gate.hpp) open the window kOrderWindowBelow under the
       // (lowest) theoretical order; the metric's declared order can differ from a gate's.

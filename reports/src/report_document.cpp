@@ -63,11 +63,4 @@ std::vector<std::string> ordered_metric_names(const harness::SweepResult& result
   return names;
 }
 
-const harness::MetricSpec* find_metric_spec(const harness::CaseInfo& info,
-                                            const std::string& name) {
-  for (const auto& spec : info.metrics)
-    if (spec.name == name) return &spec;
-  return nullptr;
-}
-
 }  // namespace rodvv::reports

@@ -76,4 +76,11 @@ struct CaseInfo {
   std::vector<MetricSpec> metrics;
 };
 
+// The MetricSpec of `name` in the case, or nullptr when the case does not declare it.
+const MetricSpec* find_metric_spec(const CaseInfo& info, const std::string& name);
+
+// Whether `parameters` hold the case's defaults (same names, same values). With unit_scales_free a
+// parameter marked unit_scale may differ: a case posed in its own units gives the same results.
+bool at_default_parameters(const CaseInfo& info, const std::vector<Parameter>& parameters, bool unit_scales_free);
+
 }  // namespace rodvv::harness

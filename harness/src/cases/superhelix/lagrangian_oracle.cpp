@@ -43,8 +43,7 @@ double spin_rate(const OracleRod& rod, double t) { return rod.spin_rate + rod.sp
 
 Shape shape_at(const OracleRod& rod, const VecX& q, double t) {
   sh::RodModel model = rod.model;
-  const double angle = rod.spin_rate * t + 0.5 * rod.spin_acceleration * t * t;
-  model.root_frame = Eigen::AngleAxisd(angle, rod.spin_axis).toRotationMatrix() * rod.model.root_frame;
+  model.root_frame = oracle_root_frame(rod, t);
   const sh::Kinematics kinematics(model, q);
   Shape shape;
   shape.root_spin = spin_rate(rod, t) * rod.spin_axis;
@@ -92,38 +91,46 @@ double gravity_energy(const OracleRod& rod, const Shape& shape) {
   return V;
 }
 
-// M = d2T/dq'^2 and p = dT/dq' (T is quadratic in q': both exact).
-void mass_and_momentum(const OracleRod& rod, const Shape& shape, const VecX& qdot, MatX& M, VecX& p) {
-  const auto n = qdot.size();
+// M = d2T/dq'^2 (exact: T is quadratic in q').
+MatX mass_matrix(const OracleRod& rod, const Shape& shape, Eigen::Index n) {
   const Vec3 J = section_inertia(rod);
-  M = MatX::Zero(n, n);
-  p = VecX::Zero(n);
+  MatX M = MatX::Zero(n, n);
   for (const auto& s : shape.samples) {
     const MatX material = s.frame.transpose() * s.rotation_jacobian;  // R^T Theta
-    const Vec3 spin = s.frame.transpose() * shape.root_spin;
     M += s.weight * (rod.model.line_density * s.position_jacobian.transpose() * s.position_jacobian +
                      material.transpose() * J.asDiagonal() * material);
-    p += s.weight * (rod.model.line_density * s.position_jacobian.transpose() * s.transport +
-                     material.transpose() * J.cwiseProduct(spin));
   }
-  p += M * qdot;
+  return M;
+}
+
+// p = dT/dq' (exact).
+VecX momentum(const OracleRod& rod, const Shape& shape, const VecX& qdot) {
+  const Vec3 J = section_inertia(rod);
+  VecX p = VecX::Zero(qdot.size());
+  for (const auto& s : shape.samples) {
+    const Vec3 v = s.transport + s.position_jacobian * qdot;
+    const Vec3 Omega = s.frame.transpose() * (shape.root_spin + s.rotation_jacobian * qdot);
+    p += s.weight * (rod.model.line_density * s.position_jacobian.transpose() * v +
+                     (s.frame.transpose() * s.rotation_jacobian).transpose() * J.cwiseProduct(Omega));
+  }
+  return p;
 }
 
 VecX momentum(const OracleRod& rod, const VecX& q, const VecX& qdot, double t) {
-  MatX M;
-  VecX p;
-  mass_and_momentum(rod, shape_at(rod, q, t), qdot, M, p);
-  return p;
+  return momentum(rod, shape_at(rod, q, t), qdot);
 }
 
 }  // namespace
 
+Mat3 oracle_root_frame(const OracleRod& rod, double t) {
+  const double angle = rod.spin_rate * t + 0.5 * rod.spin_acceleration * t * t;
+  return Eigen::AngleAxisd(angle, rod.spin_axis).toRotationMatrix() * rod.model.root_frame;
+}
+
 VecX oracle_acceleration(const OracleRod& rod, const VecX& q, const VecX& qdot, double t) {
   const auto n = q.size();
   const double L = rod.model.length;
-  MatX M;
-  VecX p;
-  mass_and_momentum(rod, shape_at(rod, q, t), qdot, M, p);
+  const MatX M = mass_matrix(rod, shape_at(rod, q, t), n);
 
   // dp/dq q' along q' (a central difference of step delta |q'| L = cbrt(eps)).
   VecX p_rate = VecX::Zero(n);

@@ -18,8 +18,8 @@
 // by 6-point Gauss-Legendre quadrature per element (Boost; the solver uses its own 4-point rule: the
 // two semi-discrete Lagrangians differ by the quadrature error, far below the step's error here). Lagrange:
 //   M q'' = -dV/dq + dT/dq - (dp/dq) q' - dp/dt,   p = dT/dq',
-// with M by polarisation of T in q' (exact: T is quadratic in q'), p by central differences in q'
-// (exact), and dp/dq q', dp/dt, dT/dq, dV/dq by central differences (steps cbrt(eps) of their
+// with M and p = M q' + (the root's transport terms) summed from the samples' Jacobians (exact: T is
+// quadratic in q'), and dp/dq q', dp/dt, dT/dq, dV/dq by central differences (steps cbrt(eps) of their
 // scales: truncation and round-off ~1e-10 relative).
 #include <vector>
 
@@ -40,6 +40,9 @@ struct OracleRod {
 struct OracleState {
   VecX q, qdot;
 };
+
+// The root frame at t: Rot(a, Omega t + alpha t^2 / 2) R0 (the oracle's own root motion).
+Mat3 oracle_root_frame(const OracleRod& rod, double t);
 
 // q'' at (q, q', t).
 VecX oracle_acceleration(const OracleRod& rod, const VecX& q, const VecX& qdot, double t);

@@ -14,7 +14,6 @@
 // Errors at 8 times evenly spaced over t_end (the same instants for the solver, whose dt divides them,
 // and the oracle): the tip position / L, the strains (q L) and the strain rates (q' L t_end), max over
 // the times. Semi-implicit Euler is first order: order gates 1 and measured C h bounds.
-#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
@@ -84,8 +83,7 @@ LevelOutput run(const Parameters& p, double dt) {
   // The tip at the oracle's root pose at t (its own angle Omega t + alpha t^2 / 2).
   const auto tip = [&](const VecX& q, double t) {
     sh::RodModel posed = rod.model;
-    const double angle = rod.spin_rate * t + 0.5 * rod.spin_acceleration * t * t;
-    posed.root_frame = Eigen::AngleAxisd(angle, rod.spin_axis).toRotationMatrix() * rod.model.root_frame;
+    posed.root_frame = oracle_root_frame(rod, t);
     return sh::Kinematics(posed, q).tip_position();
   };
   sh::DynamicState state{start.q, start.qdot, 0.0};

@@ -54,7 +54,7 @@ std::vector<CaseGroup> group_cases(const ValidationReport& report);
 // author's order), then any others found in its levels, alphabetically.
 std::vector<std::string> ordered_metric_names(const harness::SweepResult& result);
 
-// The MetricSpec of `name` in the case, or nullptr when the case does not declare it.
-const harness::MetricSpec* find_metric_spec(const harness::CaseInfo& info, const std::string& name);
+// The MetricSpec of `name` in the case (harness/case_info.hpp).
+using harness::find_metric_spec;
 
 }  // namespace rodvv::reports
