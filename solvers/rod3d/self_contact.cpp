@@ -8,12 +8,15 @@
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
+#include "rodvv/solvers/contact/cubic_barrier.hpp"
 #include "rodvv/solvers/contact/segment_proximity.hpp"
 #include "taylor2.hpp"
 
 namespace rodvv::solvers::rod3d {
 
 namespace {
+
+contact::CubicBarrier barrier(const SelfContact& contact) { return {contact.radius, contact.stiffness}; }
 
 constexpr int kPairDofs = 12;  // a0, a1, b0, b1
 using PairJet = taylor2::Jet<kPairDofs, 2>;
@@ -74,7 +77,7 @@ std::vector<ContactPair> find_contacts(const SelfContact& contact, const std::ve
     pair.t = cp.t;
     pair.distance = cp.distance;
     pair.normal = (cp.p - cp.q) / cp.distance;
-    pair.force = contact.stiffness * (reach - cp.distance) * (reach - cp.distance);
+    pair.force = barrier(contact).force(cp.distance);
     pairs.push_back(pair);
   }
   return pairs;
@@ -92,10 +95,7 @@ std::vector<ContactPair> self_contacts(const SelfContact& contact, const std::ve
   return find_contacts(contact, x, edge_length);
 }
 
-double contact_pair_energy(const SelfContact& contact, double distance) {
-  const double overlap = std::max(0.0, 2.0 * contact.radius - distance);
-  return contact.stiffness / 3.0 * overlap * overlap * overlap;
-}
+double contact_pair_energy(const SelfContact& contact, double distance) { return barrier(contact).energy(distance); }
 
 double self_contact_energy(const SelfContact& contact, const std::vector<Vec3>& x, double edge_length) {
   double energy = 0.0;
@@ -106,7 +106,7 @@ double self_contact_energy(const SelfContact& contact, const std::vector<Vec3>& 
 void self_contact_derivatives(const SelfContact& contact, const std::vector<Vec3>& x, double edge_length,
                               std::vector<Vec3>& gradient, std::vector<Eigen::Triplet<double>>* hessian) {
   gradient.assign(x.size(), Vec3::Zero());
-  const double reach = 2.0 * contact.radius, k = contact.stiffness;
+  const contact::CubicBarrier law = barrier(contact);
   for (const auto& pair : find_contacts(contact, x, edge_length)) {
     const std::array<std::size_t, 4> vertex{pair.first, pair.first + 1, pair.second, pair.second + 1};
     const std::array<Vec3, 4> ends{x[vertex[0]], x[vertex[1]], x[vertex[2]], x[vertex[3]]};
@@ -114,8 +114,7 @@ void self_contact_derivatives(const SelfContact& contact, const std::vector<Vec3
     closest.s = pair.s;
     closest.t = pair.t;
     const PairJet d = distance_jet(ends, closest);
-    // phi = k/3 (2h - d)^3: phi' = -k (2h - d)^2, phi'' = 2 k (2h - d)
-    const double overlap = reach - d.v, d_phi = -k * overlap * overlap, dd_phi = 2.0 * k * overlap;
+    const double d_phi = -law.force(d.v), dd_phi = law.force_rate(d.v);
     for (int a = 0; a < kPairDofs; ++a) gradient[vertex[a / 3]][a % 3] += d_phi * d.g[a];
     if (!hessian) continue;
     for (int a = 0; a < kPairDofs; ++a)
