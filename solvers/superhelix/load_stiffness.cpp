@@ -5,11 +5,21 @@
 
 namespace rodvv::solvers::superhelix {
 
-MatX generalised_force_jacobian(const Kinematics& kinematics, const std::vector<Vec3>& point_forces,
-                                const Vec3& tip_force, const Vec3& tip_moment) {
-  const std::size_t n = kinematics.elements(), per = kinematics.points_per_element();
+namespace {
+
+// A dead force at offset sigma of its element, with the point's offset d = r - p_e from the element's
+// base and its local position Jacobian (world), grouped by element.
+struct LoadedPoint {
+  double sigma = 0.0;
+  Vec3 force, offset;
+  Mat3 local_jacobian;
+};
+using LoadsPerElement = std::vector<std::vector<LoadedPoint>>;
+
+MatX force_jacobian(const Kinematics& kinematics, const LoadsPerElement& loads, const Vec3& tip_force,
+                    const Vec3& tip_moment) {
+  const std::size_t n = kinematics.elements();
   const double ell = kinematics.element_length();
-  const auto& points = kinematics.points();
   const VecX& q = kinematics.q();
   MatX D = MatX::Zero(Eigen::Index(3 * n), Eigen::Index(3 * n));
   // W_b (column j of element P') and W_a + Theta_a x M, per element (see the header).
@@ -41,20 +51,17 @@ MatX generalised_force_jacobian(const Kinematics& kinematics, const std::vector<
     const Vec3 shift = kinematics.base_position(e + 1) - kinematics.base_position(e);
     first_moment += shift * resultant.transpose();
     moment += shift.cross(resultant);
-    if (!point_forces.empty()) {
-      for (std::size_t g = 0; g < per; ++g) {
-        const GaussPoint& point = points[e * per + g];
-        const Vec3& f = point_forces[e * per + g];
-        const ElementSecondDerivatives local = element_second_derivatives(qe, point.sigma);
-        const Vec3 f_local = R.transpose() * f;
-        for (int j = 0; j < 3; ++j) {
-          block.col(j) += local.offset_hessian[j].transpose() * f_local;
-          w.col(j) += point.local_jacobian.col(j).cross(f);
-        }
-        first_moment += point.offset * f.transpose();
-        moment += point.offset.cross(f);
-        resultant += f;
+    for (const LoadedPoint& point : loads[e]) {
+      const Vec3& f = point.force;
+      const ElementSecondDerivatives local = element_second_derivatives(qe, point.sigma);
+      const Vec3 f_local = R.transpose() * f;
+      for (int j = 0; j < 3; ++j) {
+        block.col(j) += local.offset_hessian[j].transpose() * f_local;
+        w.col(j) += point.local_jacobian.col(j).cross(f);
       }
+      first_moment += point.offset * f.transpose();
+      moment += point.offset.cross(f);
+      resultant += f;
     }
     D.block<3, 3>(Eigen::Index(3 * e), Eigen::Index(3 * e)) = block;
     downstream[e] = w;
@@ -70,6 +77,29 @@ MatX generalised_force_jacobian(const Kinematics& kinematics, const std::vector<
     }
   }
   return D;
+}
+
+}  // namespace
+
+MatX generalised_force_jacobian(const Kinematics& kinematics, const std::vector<Vec3>& point_forces,
+                                const Vec3& tip_force, const Vec3& tip_moment) {
+  const std::size_t per = kinematics.points_per_element();
+  LoadsPerElement loads(kinematics.elements());
+  for (std::size_t g = 0; g < point_forces.size(); ++g) {
+    const GaussPoint& point = kinematics.points()[g];
+    loads[g / per].push_back({point.sigma, point_forces[g], point.offset, point.local_jacobian});
+  }
+  return force_jacobian(kinematics, loads, tip_force, tip_moment);
+}
+
+MatX point_load_jacobian(const Kinematics& kinematics, const std::vector<PointLoad>& point_loads) {
+  LoadsPerElement loads(kinematics.elements());
+  for (const PointLoad& load : point_loads) {
+    const Mat3& R = kinematics.base_frame(load.element);
+    const PointMaps maps = element_point_maps(kinematics.q().segment<3>(Eigen::Index(3 * load.element)), load.sigma);
+    loads.at(load.element).push_back({load.sigma, load.force, R * maps.Ge0, R * maps.dG0});
+  }
+  return force_jacobian(kinematics, loads, Vec3::Zero(), Vec3::Zero());
 }
 
 MatX load_stiffness(const RodModel& model, const Kinematics& kinematics, double load_factor) {

@@ -14,6 +14,7 @@
 #include "rodvv/common/validation.hpp"
 #include "rodvv/solvers/contact/cubic_barrier.hpp"
 #include "rodvv/solvers/contact/segment_proximity.hpp"
+#include "rodvv/solvers/superhelix/load_stiffness.hpp"
 
 namespace rodvv::solvers::superhelix {
 
@@ -168,7 +169,13 @@ ArcClosestPoints closest_points_on_arcs(const Kinematics& kinematics, std::size_
       const ArcPoint ta = arc_point(kinematics, first, trial[0]), tb = arc_point(kinematics, second, trial[1]);
       const Vec3 trial_gap = ta.r - tb.r;
       const double trial_f = 0.5 * trial_gap.squaredNorm();
-      if (trial_f <= f + 1e-4 * taken) {
+      // Near the minimiser f's decrease drowns in its rounding (eps f) long before z is at round-off:
+      // there a full Newton step is taken when it reduces the gradient instead.
+      const bool final_steps = halving == 0 && step.cwiseAbs().maxCoeff() <= 1e-6 * ell &&
+                               std::hypot(trial_gap.dot(ta.tangent) * (free[0] ? 1.0 : 0.0),
+                                          trial_gap.dot(tb.tangent) * (free[1] ? 1.0 : 0.0)) <
+                                   std::hypot(g[0] * (free[0] ? 1.0 : 0.0), g[1] * (free[1] ? 1.0 : 0.0));
+      if (final_steps || trial_f <= f + 1e-4 * taken) {
         moved = true;
         x[0] = trial[0];
         x[1] = trial[1];
@@ -234,6 +241,59 @@ VecX self_contact_generalized_force(const Kinematics& kinematics, const std::vec
     force.noalias() -= pair.force * (kinematics.position_jacobian(pair.second, pair.t).transpose() * pair.normal);
   }
   return force;
+}
+
+MatX self_contact_hessian(const Kinematics& kinematics, const SelfContact& contact,
+                          const std::vector<ArcContact>& contacts) {
+  const contact::CubicBarrier law{contact.radius, contact.stiffness};
+  const double ell = kinematics.element_length();
+  const auto size = 3 * static_cast<Eigen::Index>(kinematics.elements());
+  MatX hessian = MatX::Zero(size, size);
+  // phi' n . d2(Delta)/dq2 is the dead-load stiffness of the forces phi' n = -force n at the first
+  // point and +force n at the second (F = sum J^T f is linear in f).
+  std::vector<PointLoad> held;
+  for (const auto& pair : contacts) {
+    const double d = pair.distance, d_phi = -pair.force, dd_phi = law.force_rate(d);
+    const Vec3& n = pair.normal;
+    const ArcPoint P = arc_point(kinematics, pair.first, pair.s), Q = arc_point(kinematics, pair.second, pair.t);
+    const MatX J = kinematics.position_jacobian(pair.first, pair.s) - kinematics.position_jacobian(pair.second, pair.t);
+    const Mat3 transverse = Mat3::Identity() - n * n.transpose();
+    const VecX gradient = J.transpose() * n;  // dd/dq
+    const MatX JT = transverse * J;           // (I - n n^T) J_Delta
+    hessian.noalias() += dd_phi * gradient * gradient.transpose();
+    hessian.noalias() += (d_phi / d) * (J.transpose() * JT);
+    held.push_back({pair.first, pair.s, -pair.force * n});
+    held.push_back({pair.second, pair.t, pair.force * n});
+    // Minus the closest points' motion: D_qz D_zz^+ D_zq over the free parameters (implicit function
+    // theorem on the stationarity of the distance in z = (s, t)).
+    const bool free_s = pair.s > 0.0 && pair.s < ell, free_t = pair.t > 0.0 && pair.t < ell;
+    if (!free_s && !free_t) continue;
+    MatX Dqz(size, 2);
+    Dqz.col(0) = JT.transpose() * P.tangent / d +
+                 kinematics.rotation_jacobian(pair.first, pair.s).transpose() * P.tangent.cross(n);
+    Dqz.col(1) = -(JT.transpose() * Q.tangent) / d -
+                 kinematics.rotation_jacobian(pair.second, pair.t).transpose() * Q.tangent.cross(n);
+    Eigen::Matrix2d Dzz;
+    Dzz(0, 0) = (1.0 - std::pow(n.dot(P.tangent), 2)) / d + n.dot(P.tangent_rate);
+    Dzz(1, 1) = (1.0 - std::pow(n.dot(Q.tangent), 2)) / d - n.dot(Q.tangent_rate);
+    Dzz(0, 1) = Dzz(1, 0) = -(P.tangent.dot(Q.tangent) - n.dot(P.tangent) * n.dot(Q.tangent)) / d;
+    if (!free_s || !free_t) {  // one parameter at its bound: a 1 x 1 problem in the other
+      const int i = free_s ? 0 : 1;
+      if (Dzz(i, i) > 0.0) hessian.noalias() -= (d_phi / Dzz(i, i)) * Dqz.col(i) * Dqz.col(i).transpose();
+      continue;
+    }
+    // Pseudo-inverse: arcs parallel along a valley of minimisers (D_zz singular) move nothing there.
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(Dzz);
+    const double cutoff = 1e-10 * eigen.eigenvalues().cwiseAbs().maxCoeff();
+    for (int k = 0; k < 2; ++k) {
+      const double lambda = eigen.eigenvalues()(k);
+      if (!(std::abs(lambda) > cutoff)) continue;
+      const VecX u = Dqz * eigen.eigenvectors().col(k);
+      hessian.noalias() -= (d_phi / lambda) * u * u.transpose();
+    }
+  }
+  hessian += point_load_jacobian(kinematics, held);
+  return hessian;
 }
 
 }  // namespace rodvv::solvers::superhelix

@@ -193,6 +193,34 @@ TEST(SuperHelixSelfContact, GeneralizedForceIsMinusTheEnergyGradient) {
   EXPECT_GT((force + difference).cwiseAbs().maxCoeff(), 0.5 * force.cwiseAbs().maxCoeff());
 }
 
+TEST(SuperHelixSelfContact, HessianMatchesCentralDifferencesOfTheGeneralizedForce) {
+  for (const double phase : {0.9, 2.1}) {
+    const std::size_t n = 16;
+    const sh::RodModel model = rod(n);
+    const sh::SelfContact contact{0.02, 3.0e3};
+    const VecX q = tangled(n, phase);
+    const sh::Kinematics kinematics(model, q);
+    const auto contacts = sh::self_contacts(kinematics, contact);
+    ASSERT_GE(contacts.size(), 1u) << phase;
+    const rodvv::MatX hessian = sh::self_contact_hessian(kinematics, contact, contacts);
+    // -dQ/dq by central differences of Q with the contacts re-found at q +- h (step 1e-6: truncation
+    // and rounding both ~1e-10 of the largest entry; gate 1e-6 of it).
+    const double h = 1e-6;
+    rodvv::MatX difference(q.size(), q.size());
+    for (Eigen::Index j = 0; j < q.size(); ++j) {
+      VecX plus = q, minus = q;
+      plus(j) += h;
+      minus(j) -= h;
+      const sh::Kinematics kp(model, plus), km(model, minus);
+      difference.col(j) = -(sh::self_contact_generalized_force(kp, sh::self_contacts(kp, contact)) -
+                            sh::self_contact_generalized_force(km, sh::self_contacts(km, contact))) / (2 * h);
+    }
+    const double scale = hessian.cwiseAbs().maxCoeff();
+    EXPECT_LE((hessian - difference).cwiseAbs().maxCoeff(), 1e-6 * scale) << "phase " << phase;
+    EXPECT_LE((hessian - hessian.transpose()).cwiseAbs().maxCoeff(), 1e-9 * scale);
+  }
+}
+
 TEST(SuperHelixSelfContact, StraightRodHasNoContactAndBadInputIsNamed) {
   const sh::Kinematics straight(rod(16), VecX::Zero(48));
   EXPECT_TRUE(sh::self_contacts(straight, {0.05, 1.0}).empty());

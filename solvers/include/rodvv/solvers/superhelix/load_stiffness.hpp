@@ -21,6 +21,7 @@
 // Symmetric for gravity and a dead force (conservative); a dead tip moment adds the unsymmetric
 // part of the Ziegler load (P > P' only).
 // tests/solvers/test_superhelix_load_stiffness.cpp checks D against central differences of F.
+#include <cstddef>
 #include <vector>
 
 #include "rodvv/common/eigen_types.hpp"
@@ -32,6 +33,14 @@ namespace rodvv::solvers::superhelix {
 // point_forces: one per Gauss point (Kinematics::points() order) or empty; 3N square.
 MatX generalised_force_jacobian(const Kinematics& kinematics, const std::vector<Vec3>& point_forces,
                                 const Vec3& tip_force, const Vec3& tip_moment);
+
+// Dead forces at any points (element, offset sigma in [0, ell]), e.g. contact forces held fixed.
+struct PointLoad {
+  std::size_t element = 0;
+  double sigma = 0.0;
+  Vec3 force = Vec3::Zero();
+};
+MatX point_load_jacobian(const Kinematics& kinematics, const std::vector<PointLoad>& point_loads);
 
 // Gravity m_g g and the dead end force and moment of the model, all scaled by load_factor.
 MatX load_stiffness(const RodModel& model, const Kinematics& kinematics, double load_factor = 1.0);

@@ -79,4 +79,15 @@ double self_contact_energy(const SelfContact& contact, const std::vector<ArcCont
 // force (dr_P/dq(s)^T n - dr_Q/dq(t)^T n).
 VecX self_contact_generalized_force(const Kinematics& kinematics, const std::vector<ArcContact>& contacts);
 
+// The energy's Hessian d2E/dq2 (3N square, symmetric) at fixed contact set: with d(q) the pair's
+// distance at its minimiser z* = (s*, t*), J = dr_P/dq(s*) - dr_Q/dq(t*), phi' = -force:
+//   d2E = phi'' J^T n n^T J + phi' [ J^T (I - n n^T) J / d + n . d2(Delta)/dq2 - D_qz D_zz^+ D_zq ],
+// where n . d2(Delta)/dq2 is the dead-load stiffness of the unit forces +-n at the two points
+// (load_stiffness.hpp: point_load_jacobian), D_zz = d2|Delta|/dz2 and D_qz = d2|Delta|/dq dz over the
+// free parameters (a parameter at the end of its element stays there), by the implicit function
+// theorem on d|Delta|/dz = 0. A singular D_zz (arcs parallel along a valley of minimisers) is
+// pseudo-inverted. Tested against central differences of the generalised force.
+MatX self_contact_hessian(const Kinematics& kinematics, const SelfContact& contact,
+                          const std::vector<ArcContact>& contacts);
+
 }  // namespace rodvv::solvers::superhelix
