@@ -8,7 +8,7 @@ namespace rodvv::solvers::superhelix {
 
 void validate_clothoid(const RodModel& model) {
   validate(model);
-  require_no_point_forces(model, "the super-clothoid");
+  require_statics_only_loads_absent(model, "the super-clothoid");
   if (!model.natural_strain_per_element.empty())
     throw InputError("natural_strain_per_element",
                      "invalid parameter 'natural_strain_per_element': must be empty for the super-clothoid "

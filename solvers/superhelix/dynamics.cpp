@@ -25,7 +25,7 @@ using Mat36 = Eigen::Matrix<double, 3, 6>;
 
 void check_state(const RodModel& model, const DynamicState& state, double h) {
   validate(model);
-  require_no_point_forces(model, "the Super-Helix dynamics");
+  require_statics_only_loads_absent(model, "the Super-Helix dynamics");
   require_positive("h", h);
   const auto n = static_cast<Eigen::Index>(dof_count(model));
   if (state.q.size() != n || state.qdot.size() != n)
@@ -458,7 +458,7 @@ double kinetic_energy(const RodModel& model, const Kinematics& kinematics, const
 }
 
 double total_energy(const RodModel& model, const DynamicState& state) {
-  require_no_point_forces(model, "the Super-Helix total energy");
+  require_statics_only_loads_absent(model, "the Super-Helix total energy");
   const Kinematics kinematics(model, state.q);
   return kinetic_energy(model, kinematics, state.qdot) + elastic_energy(model, state.q) +
          gravity_energy(model, kinematics) - model.end_force.dot(kinematics.tip_position());

@@ -17,6 +17,15 @@ namespace {
 constexpr double kSymmetryTolerance = 1e-7;  // as stability.hpp
 
 // q0 = q - K^-1 F, with F given (the one formula of both entry points).
+// The inverse problem here is posed for the loads of loads.hpp; self-contact forces enter it as
+// unknowns (inverse_contact.hpp), not as a barrier.
+void validate_inverse(const RodModel& model) {
+  validate(model);
+  if (model.self_contact.radius != 0.0)
+    throw InputError("self_contact", "invalid parameter 'self_contact': inverse statics does not take the barrier "
+                                     "self-contact (contact forces are unknowns of inverse_contact); its radius must be 0");
+}
+
 VecX rest_strain(const RodModel& model, const VecX& q, const VecX& force) {
   return q - force.cwiseQuotient(generalised_stiffness(model));
 }
@@ -24,13 +33,13 @@ VecX rest_strain(const RodModel& model, const VecX& q, const VecX& force) {
 
 // validate(model), then Kinematics checks q (InputError "q": size 3N, finite).
 VecX natural_strain_for(const RodModel& model, const VecX& q) {
-  validate(model);
+  validate_inverse(model);
   const Kinematics kinematics(model, q);
   return rest_strain(model, q, external_generalised_force(model, kinematics));
 }
 
 InverseStatics inverse_statics(const RodModel& model, const VecX& q) {
-  validate(model);
+  validate_inverse(model);
   const Kinematics kinematics(model, q);
   const VecX k = generalised_stiffness(model);
   const VecX force = external_generalised_force(model, kinematics);

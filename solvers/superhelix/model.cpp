@@ -44,6 +44,10 @@ void validate(const RodModel& model) {
     throw InputError("root_frame", "invalid parameter 'root_frame': must be a rotation matrix "
                                    "(|R^T R - I| <= 1e-10 and |det R - 1| <= 1e-10), got |R^T R - I| = " +
                                        format_value(orthogonality) + ", det R = " + format_value(det));
+  if (model.self_contact.radius != 0.0 || model.self_contact.stiffness != 0.0) {
+    require_positive("self_contact.radius", model.self_contact.radius);
+    require_positive("self_contact.stiffness", model.self_contact.stiffness);
+  }
   if (model.gauss_points < 1 || model.gauss_points > 8)
     throw InputError("gauss_points", "invalid parameter 'gauss_points' = " +
                                          std::to_string(model.gauss_points) + ": must be an integer in [1, 8]");
@@ -56,10 +60,13 @@ void validate(const RodModel& model) {
   }
 }
 
-void require_no_point_forces(const RodModel& model, const char* what) {
+void require_statics_only_loads_absent(const RodModel& model, const char* what) {
   if (!model.point_forces.empty())
     throw InputError("point_forces", std::string("invalid parameter 'point_forces': ") + what +
                                          " does not take forces at the Gauss points (statics only); must be empty");
+  if (model.self_contact.radius != 0.0)
+    throw InputError("self_contact", std::string("invalid parameter 'self_contact': ") + what +
+                                         " does not take self-contact (statics only); its radius must be 0");
 }
 
 Vec3 elliptic_section_inertia(double line_density, double a, double b) {

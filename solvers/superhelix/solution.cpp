@@ -6,7 +6,7 @@ namespace rodvv::solvers::superhelix {
 
 SpatialRodSolution make_solution(const RodModel& model, const VecX& q, std::string method) {
   validate(model);
-  require_no_point_forces(model, "the Super-Helix solution struct (n(s) from gravity and the end force)");
+  require_statics_only_loads_absent(model, "the Super-Helix solution struct (n(s) from gravity and the end force)");
   const Kinematics kinematics(model, q);
   const std::size_t n = model.elements;
   const double ell = element_length(model);

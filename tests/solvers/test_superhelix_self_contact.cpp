@@ -10,9 +10,11 @@
 #include <vector>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/solvers/superhelix/dynamics.hpp"
 #include "rodvv/solvers/superhelix/kinematics.hpp"
 #include "rodvv/solvers/superhelix/model.hpp"
 #include "rodvv/solvers/superhelix/self_contact.hpp"
+#include "rodvv/solvers/superhelix/statics.hpp"
 #include "rodvv/testing/tolerance.hpp"
 
 namespace {
@@ -221,6 +223,44 @@ TEST(SuperHelixSelfContact, HessianMatchesCentralDifferencesOfTheGeneralizedForc
   }
 }
 
+// A rod whose rest shape (the tangled strains above) passes through itself at crossings: the statics
+// with self-contact separates the crossings to where the barrier balances the bending.
+TEST(SuperHelixSelfContact, StaticsSeparatesARestShapeThatCrossesItself) {
+  const std::size_t n = 24;
+  sh::RodModel model = rod(n);
+  model.stiffness = Vec3(0.7, 1.3, 2.1);
+  const VecX rest = tangled(n, 0.9);
+  for (std::size_t e = 0; e < n; ++e) model.natural_strain_per_element.push_back(rest.segment<3>(3 * static_cast<Eigen::Index>(e)));
+  model.self_contact = {0.02, 1.0e5};
+  double rest_closest = INFINITY;
+  for (const auto& pair : sh::self_contacts(sh::Kinematics(model, rest), model.self_contact))
+    rest_closest = std::min(rest_closest, pair.distance);
+  const sh::StaticResult result = sh::solve_static(model);
+  const sh::Kinematics kinematics(model, result.q);
+  const auto contacts = sh::self_contacts(kinematics, model.self_contact);
+  ASSERT_FALSE(contacts.empty());
+  double closest = INFINITY;
+  for (const auto& pair : contacts) closest = std::min(closest, pair.distance);
+  EXPECT_GT(closest, 1.4 * rest_closest);  // 0.0210 at rest, 0.0301 at equilibrium (N = 24)
+  EXPECT_LT(closest, 2 * model.self_contact.radius);
+  // Stationary: the residual at the solver's tolerance, and the exact Jacobian (contact Hessian
+  // included) against central differences of the residual at the solution (1e-6 of its largest entry).
+  EXPECT_LE(sh::static_residual(model, result.q).cwiseAbs().maxCoeff(), 1e-10);
+  const rodvv::MatX jacobian = sh::static_jacobian(model, result.q);
+  rodvv::MatX difference(jacobian.rows(), jacobian.cols());
+  const double h = 1e-6;
+  for (Eigen::Index j = 0; j < result.q.size(); ++j) {
+    VecX plus = result.q, minus = result.q;
+    plus(j) += h;
+    minus(j) -= h;
+    difference.col(j) = (sh::static_residual(model, plus) - sh::static_residual(model, minus)) / (2 * h);
+  }
+  EXPECT_LE((jacobian - difference).cwiseAbs().maxCoeff(), 1e-6 * jacobian.cwiseAbs().maxCoeff());
+  // Without contact the same rod stays at its rest shape.
+  model.self_contact = {};
+  EXPECT_LE((sh::solve_static(model).q - rest).cwiseAbs().maxCoeff(), 0.0);
+}
+
 TEST(SuperHelixSelfContact, StraightRodHasNoContactAndBadInputIsNamed) {
   const sh::Kinematics straight(rod(16), VecX::Zero(48));
   EXPECT_TRUE(sh::self_contacts(straight, {0.05, 1.0}).empty());
@@ -236,6 +276,16 @@ TEST(SuperHelixSelfContact, StraightRodHasNoContactAndBadInputIsNamed) {
     ADD_FAILURE() << "negative stiffness accepted";
   } catch (const rodvv::InputError& e) {
     EXPECT_EQ(e.parameter(), "stiffness");
+  }
+  sh::RodModel model = rod(8);
+  model.self_contact = {0.01, 0.0};
+  EXPECT_THROW(sh::solve_static(model), rodvv::InputError);  // self_contact.stiffness
+  model.self_contact = {0.01, 1.0};
+  try {
+    (void)sh::total_energy(model, {VecX::Zero(24), VecX::Zero(24)});
+    ADD_FAILURE() << "the dynamics' energy ignored the self-contact";
+  } catch (const rodvv::InputError& e) {
+    EXPECT_EQ(e.parameter(), "self_contact");
   }
 }
 

@@ -32,6 +32,12 @@
 
 namespace rodvv::solvers::superhelix {
 
+// Frictionless self-contact through the cubic barrier (self_contact.hpp; statics only).
+struct SelfContact {
+  double radius = 0.0;     // h > 0: contact when two arcs are closer than 2h (0 in a model: none)
+  double stiffness = 0.0;  // k > 0, force / length^2 (the cubic barrier's)
+};
+
 struct RodModel {
   double length = 1.0;
   std::size_t elements = 8;
@@ -49,13 +55,15 @@ struct RodModel {
   // (elements x gauss_points). Statics only (contact forces held fixed, inverse_contact.hpp): the
   // dynamics, the solution struct and the super-clothoid refuse a non-empty list.
   std::vector<Vec3> point_forces;
+  SelfContact self_contact;               // radius 0: none. Statics only (static_residual, static_jacobian)
   double rayleigh_stiffness = 0.0;        // gamma: damping force -gamma K qdot
   std::size_t gauss_points = 4;           // Gauss-Legendre points per element (mass, gravity)
 };
 
 void validate(const RodModel& model);
-// InputError "point_forces" naming `what` (the dynamics, the solution struct, the super-clothoid).
-void require_no_point_forces(const RodModel& model, const char* what);
+// InputError "point_forces" or "self_contact" naming `what` (the dynamics, the solution struct, the
+// super-clothoid), which do not take these statics-only loads.
+void require_statics_only_loads_absent(const RodModel& model, const char* what);
 
 // (rho I0, rho I1, rho I2) of a solid elliptic section of line density rho S with semi-axis a along
 // n1 and b along n2 (S = pi a b, I1 = pi a b^3 / 4, I2 = pi a^3 b / 4, I0 = I1 + I2):

@@ -35,11 +35,7 @@
 
 namespace rodvv::solvers::superhelix {
 
-struct SelfContact {
-  double radius = 0.0;     // h > 0: contact when two arcs are closer than 2h
-  double stiffness = 0.0;  // k > 0, force / length^2 (the cubic barrier's)
-};
-
+// SelfContact (radius h, barrier stiffness k) is declared in model.hpp.
 // InputError naming "radius" or "stiffness" unless finite and > 0.
 void validate(const SelfContact& contact);
 

@@ -8,6 +8,11 @@
 // (loads.hpp). For gravity and an end force r is the gradient of 1/2 (q-q0)^T K (q-q0) + V(q);
 // a dead end moment is not conservative for general 3-D rotations (Ziegler), so the Jacobian is
 // not symmetric in general and Newton works on r itself.
+// Self-contact (model.self_contact, radius > 0): r gains -Q_c, the barrier's generalised force
+// (self_contact.hpp; never scaled by the load factor), and the Jacobian its exact Hessian. Crossing
+// contacts (the knot's) converge as without contact; LINE contacts (parallel arcs along a ply or a
+// spring's turns) do not yet: one closest-point pair per element pair has no unique minimiser there,
+// so the contact point and its force jump with q and Newton's line search stalls (SolverError).
 //
 // Newton (newton.hpp, shared with the super-clothoid): the exact Jacobian dr/dq = K - lambda dF_ext/dq
 // (load_stiffness.hpp, O(N^2); it replaced central differences of the residual, whose ~1e-11
