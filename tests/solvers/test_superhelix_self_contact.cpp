@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
+#include <utility>
 #include <numbers>
 #include <vector>
 
@@ -73,47 +75,61 @@ VecX tangled(std::size_t elements, double phase) {
   return q;
 }
 
-// Dense sampling oracle: for every pair of elements more than m apart, the smallest distance between
-// 41 x 41 points of the two arcs.
-double sampled_distance(const sh::Kinematics& kinematics, std::size_t P, std::size_t Q, int samples = 41) {
-  const double ell = kinematics.element_length();
-  std::vector<Vec3> a(samples), b(samples);
-  for (int i = 0; i < samples; ++i) {
-    a[i] = kinematics.position(P, ell * i / (samples - 1));
-    b[i] = kinematics.position(Q, ell * i / (samples - 1));
-  }
+// Dense sampling oracle: the smallest distance from a point to 41 points of an element's arc.
+double sampled_distance(const sh::Kinematics& kinematics, const Vec3& point, std::size_t element, int samples = 41) {
   double best = INFINITY;
-  for (const auto& x : a)
-    for (const auto& y : b) best = std::min(best, (x - y).norm());
+  for (int i = 0; i < samples; ++i)
+    best = std::min(best, (point - kinematics.position(element, kinematics.element_length() * i / (samples - 1))).norm());
   return best;
 }
 
-TEST(SuperHelixSelfContact, ConsecutiveTurnsOfAHelixAreAtTheClosedFormDistance) {
+TEST(SuperHelixSelfContact, PointsOfAHelixTouchTheNeighbouringTurnsAtTheClosedFormDistance) {
   const TightHelix helix;
   const std::size_t n = 24;
   const sh::Kinematics kinematics(rod(n), helix.q(n));
-  const sh::SelfContact contact{0.03, 2.0e4};  // 2h = 0.06 > the turn distance 0.0496
+  const sh::SelfContact contact{0.03, 2.0e4};  // 2h = 0.06 > the turn distance 0.0498; two turns 0.1 apart
   const double d_turn = helix.turn_distance();
   ASSERT_LT(d_turn, 2 * contact.radius);
   const auto contacts = sh::self_contacts(kinematics, contact);
   ASSERT_FALSE(contacts.empty());
-  // Every point of the helix is d_turn from the next turn, which lies (2 pi + delta) / |q| further on.
+  // Every point of the helix is d_turn from the next turn and from the previous one, whose feet lie
+  // (2 pi + delta) / |q| further on and back: each Gauss point with both inside the rod touches twice
+  // there. Where the partner lies beyond an end of the rod, the foot is that end (a constrained
+  // minimum), farther than d_turn.
   const double ell = kinematics.element_length(), shift = (2 * std::numbers::pi + helix.turn_offset()) / helix.omega;
-  std::vector<double> nearest(n, INFINITY);
+  std::map<std::pair<std::size_t, double>, int> touches;
+  double weights = 0.0;
+  std::size_t at_ends = 0;
   for (const auto& pair : contacts) {
-    EXPECT_GE(pair.distance, d_turn * (1 - 64 * kEpsilon)) << pair.first << " " << pair.second;
     EXPECT_NEAR(pair.distance, (pair.p - pair.q).norm(), 16 * kEpsilon);
-    EXPECT_NEAR(pair.force, contact.stiffness * std::pow(2 * contact.radius - pair.distance, 2), 1e-12 * pair.force);
-    nearest[pair.first] = std::min(nearest[pair.first], pair.distance);
+    EXPECT_NEAR(pair.force, pair.weight * contact.stiffness * std::pow(2 * contact.radius - pair.distance, 2),
+                1e-12 * pair.force);
+    const double s = static_cast<double>(pair.first) * ell + pair.s;
+    const double foot = static_cast<double>(pair.second) * ell + pair.t;
+    if (foot == 0.0 || foot == kLength) {
+      EXPECT_GT(pair.distance, d_turn) << "an end foot";
+      EXPECT_LT(std::abs(foot - s), shift);
+      ++at_ends;
+      continue;
+    }
+    EXPECT_NEAR(pair.distance, d_turn, 1e-11 * d_turn) << pair.first << " " << pair.s << " -> " << pair.second;
+    EXPECT_NEAR(std::abs(foot - s), shift, 1e-9) << "the foot is on the neighbouring turn";
+    ++touches[{pair.first, pair.s}];
+    weights += pair.weight;
   }
-  std::size_t checked = 0;
-  for (std::size_t e = 0; e < n; ++e) {
-    if (static_cast<double>(e + 1) * ell + shift > kLength) continue;  // its partner leaves the rod
-    // The partner's arc is reached at an interior point of the pair: the minimum is the helix's.
-    EXPECT_NEAR(nearest[e], d_turn, 1e-11 * d_turn) << "element " << e;
-    ++checked;
+  EXPECT_GE(at_ends, 2u);
+  std::size_t both = 0;
+  for (const auto& gauss : kinematics.points()) {
+    const double s = static_cast<double>(gauss.element) * ell + gauss.sigma;
+    const int expected = (s + shift < kLength ? 1 : 0) + (s - shift > 0.0 ? 1 : 0);
+    const auto found = touches.find({gauss.element, gauss.sigma});
+    EXPECT_EQ(found == touches.end() ? 0 : found->second, expected) << s;
+    both += expected == 2 ? 1 : 0;
   }
-  EXPECT_GE(checked, 10u);
+  EXPECT_GE(both, 20u);
+  // Half a weight per side: the interior contacts' weights add up to the length in contact, L - shift
+  // counted from each side, to the quadrature's error at the ends of the contact region (one element).
+  EXPECT_NEAR(weights, kLength - shift, ell);
 }
 
 TEST(SuperHelixSelfContact, NothingMissedAndNothingCloserThanDenseSamplingOfTangledRods) {
@@ -123,28 +139,28 @@ TEST(SuperHelixSelfContact, NothingMissedAndNothingCloserThanDenseSamplingOfTang
     const sh::SelfContact contact{0.02, 1.0e3};
     const auto contacts = sh::self_contacts(kinematics, contact);
     const std::size_t m = sh::contact_excluded_elements(contact.radius, kinematics.element_length());
-    // A grid of spacing ell / 40 on each arc has a point within ell / 80 (arclength) of each closest
-    // point: its minimum exceeds the true distance by at most ell / 40.
-    const double sampling = 2.0 * kinematics.element_length() / 40.0;
-    std::size_t in_contact = 0;
-    for (std::size_t P = 0; P < n; ++P)
-      for (std::size_t Q = P + m + 1; Q < n; ++Q) {
-        const double sampled = sampled_distance(kinematics, P, Q);
-        const sh::ArcContact* found = nullptr;
-        for (const auto& pair : contacts)
-          if (pair.first == P && pair.second == Q) found = &pair;
-        if (found) {
-          ++in_contact;
-          EXPECT_LE(found->distance, sampled * (1 + 1e-12)) << phase << ": " << P << " " << Q;
-          EXPECT_LT(found->distance, 2 * contact.radius);
-        } else {
-          EXPECT_GE(sampled, 2 * contact.radius) << "missed " << P << " " << Q << " phase " << phase;
+    // 41 samples per arc: one within ell / 80 of any foot, so the sampled minimum exceeds the true
+    // distance by at most ell / 80.
+    const double sampling = kinematics.element_length() / 80.0;
+    std::size_t touching = 0;
+    for (const auto& gauss : kinematics.points()) {
+      double nearest = INFINITY;
+      for (std::size_t Q = 0; Q < n; ++Q)
+        if (Q + m < gauss.element || Q > gauss.element + m)
+          nearest = std::min(nearest, sampled_distance(kinematics, gauss.position, Q));
+      double found = INFINITY;
+      for (const auto& pair : contacts)
+        if (pair.first == gauss.element && pair.s == gauss.sigma) {
+          found = std::min(found, pair.distance);
+          EXPECT_GE(pair.distance, nearest - sampling) << "closer than the curve";
+          EXPECT_LT(pair.distance, 2 * contact.radius);
         }
-        if (sampled < 2 * contact.radius - sampling) {
-          EXPECT_TRUE(found) << P << " " << Q;
-        }
+      if (nearest < 2 * contact.radius - sampling) {
+        EXPECT_LE(found, nearest * (1 + 1e-12)) << "missed: element " << gauss.element << " phase " << phase;
+        ++touching;
       }
-    EXPECT_GE(in_contact, 3u) << "phase " << phase << ": the configuration must touch itself";
+    }
+    EXPECT_GE(touching, 6u) << "phase " << phase << ": the configuration must touch itself";
   }
 }
 
@@ -159,6 +175,7 @@ TEST(SuperHelixSelfContact, BroadPhaseFindsExactlyTheAllPairsContacts) {
     for (std::size_t i = 0; i < fast.size(); ++i) {
       EXPECT_EQ(fast[i].first, all[i].first);
       EXPECT_EQ(fast[i].second, all[i].second);
+      EXPECT_EQ(fast[i].s, all[i].s);
       EXPECT_EQ(fast[i].distance, all[i].distance);  // the same start, the same Newton: identical
     }
   }
@@ -231,7 +248,7 @@ TEST(SuperHelixSelfContact, StaticsSeparatesARestShapeThatCrossesItself) {
   model.stiffness = Vec3(0.7, 1.3, 2.1);
   const VecX rest = tangled(n, 0.9);
   for (std::size_t e = 0; e < n; ++e) model.natural_strain_per_element.push_back(rest.segment<3>(3 * static_cast<Eigen::Index>(e)));
-  model.self_contact = {0.02, 1.0e5};
+  model.self_contact = {0.02, 1.0e7};
   double rest_closest = INFINITY;
   for (const auto& pair : sh::self_contacts(sh::Kinematics(model, rest), model.self_contact))
     rest_closest = std::min(rest_closest, pair.distance);
@@ -241,7 +258,7 @@ TEST(SuperHelixSelfContact, StaticsSeparatesARestShapeThatCrossesItself) {
   ASSERT_FALSE(contacts.empty());
   double closest = INFINITY;
   for (const auto& pair : contacts) closest = std::min(closest, pair.distance);
-  EXPECT_GT(closest, 1.4 * rest_closest);  // 0.0210 at rest, 0.0301 at equilibrium (N = 24)
+  EXPECT_GT(closest, 1.4 * rest_closest);  // 0.0193 at rest, 0.0348 at equilibrium (N = 24)
   EXPECT_LT(closest, 2 * model.self_contact.radius);
   // Stationary: the residual at the solver's tolerance, and the exact Jacobian (contact Hessian
   // included) against central differences of the residual at the solution (1e-6 of its largest entry).
@@ -259,6 +276,53 @@ TEST(SuperHelixSelfContact, StaticsSeparatesARestShapeThatCrossesItself) {
   // Without contact the same rod stays at its rest shape.
   model.self_contact = {};
   EXPECT_LE((sh::solve_static(model).q - rest).cwiseAbs().maxCoeff(), 0.0);
+}
+
+// A coil spring whose rest pitch (0.05) is below the contact distance 2h = 0.06: line contacts between
+// its turns, which the potential Newton resolves as quadratically as the crossings above; the turns
+// end up within the barrier's overlap of 2h.
+TEST(SuperHelixSelfContact, StaticsPushesTheTurnsOfAnOverlappingSpringApart) {
+  const TightHelix helix;
+  for (const std::size_t n : {24, 48}) {
+    sh::RodModel model = rod(n);
+    model.stiffness = Vec3(0.7, 1.3, 2.1);
+    model.natural_strain = helix.q(1);
+    model.self_contact = {0.03, 1.0e7};
+    const sh::StaticResult result = sh::solve_static(model);
+    EXPECT_LE(result.iterations, 20u);
+    double closest = INFINITY;
+    for (const auto& pair : sh::self_contacts(sh::Kinematics(model, result.q), model.self_contact))
+      closest = std::min(closest, pair.distance);
+    EXPECT_GT(closest, 0.055) << n;  // the rest shape's 0.0498, pushed towards 2h = 0.06
+    EXPECT_LT(closest, 0.06) << n;
+    EXPECT_LT(sh::static_potential(model, result.q), sh::static_potential(model, helix.q(n)));
+  }
+}
+
+// The potential's gradient is the residual (central differences; gravity, an end force and contact).
+TEST(SuperHelixSelfContact, StaticPotentialGradientIsTheResidual) {
+  const std::size_t n = 12;
+  sh::RodModel model = rod(n);
+  model.stiffness = Vec3(0.7, 1.3, 2.1);
+  model.gravity = Vec3(0.3, -9.0, 1.0);
+  model.line_density = 0.02;
+  model.end_force = Vec3(0.05, 0.1, -0.2);
+  model.self_contact = {0.02, 1.0e6};
+  const VecX q = tangled(n, 0.9);
+  ASSERT_FALSE(sh::self_contacts(sh::Kinematics(model, q), model.self_contact).empty());
+  const VecX residual = sh::static_residual(model, q, 0.7);
+  VecX difference(q.size());
+  const double h = 1e-6;
+  for (Eigen::Index j = 0; j < q.size(); ++j) {
+    VecX plus = q, minus = q;
+    plus(j) += h;
+    minus(j) -= h;
+    difference(j) = (sh::static_potential(model, plus, 0.7) - sh::static_potential(model, minus, 0.7)) / (2 * h);
+  }
+  EXPECT_LE((residual - difference).cwiseAbs().maxCoeff(), 1e-6 * residual.cwiseAbs().maxCoeff());
+  model.end_moment = Vec3(0.0, 0.1, 0.0);
+  EXPECT_THROW((void)sh::static_potential(model, q), rodvv::InputError);
+  EXPECT_THROW((void)sh::solve_static(model), rodvv::InputError);  // no potential to minimise
 }
 
 TEST(SuperHelixSelfContact, StraightRodHasNoContactAndBadInputIsNamed) {

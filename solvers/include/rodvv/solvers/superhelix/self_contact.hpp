@@ -1,12 +1,27 @@
 #pragma once
 // Frictionless self-contact of a Super-Helix (ALGORITHMS.md §4; PHYSICS.md §1.2, §5.1): the rod is a
-// tube of radius h around its centreline, and two of its elements touch when their HELICAL ARCS (the
-// closed-form centreline, not chords of it) come closer than 2h. Each pair of elements in contact
-// stores the cubic barrier energy phi(d) of the nodal rod (contact/cubic_barrier.hpp) at the distance d
-// of the arcs' closest points.
+// tube of radius h around its centreline, and two stretches of it touch when their centrelines come
+// closer than 2h. The distances are measured on the HELICAL ARCS (the closed-form centreline), not
+// on chords of it.
 //
-// Which elements can touch: elements P < Q with Q - P <= m never count, m = max(1, ceil(pi h / ell))
-// (the nodal rod's rule, rod3d/self_contact.hpp: a fold that brings the tube onto itself has an
+// A line contact with a barrier per unit length. Contact between rods is distributed along them (a
+// ply's strands touch along lines; a knot's crossings over patches of length ~h), so the barrier is a
+// line integral: every point r(s) of the centreline that comes within 2h of another stretch stores
+//     psi(d) = (k/3) (2h - d)^3   per unit length (k: force / length^3; contact/cubic_barrier.hpp),
+// d the distance from r(s) to its foot on the other stretch (a local minimum of the distance to the
+// whole curve), and the line force density there is k (2h - d)^2 along the unit normal. Both sides
+// of a contact carry it, each with half the weight, so that two parallel strands store psi(d) per
+// unit length and exchange equal and opposite forces. The integral over s is the rod's Gauss
+// quadrature (model.gauss_points per element, the points of Kinematics::points()): one contact per
+// Gauss point and foot, carrying its weight w ell / 2 (times 1/2). A foot is the minimiser of the
+// point's distance to one element's arc, kept when it is a local minimum along the whole curve: in
+// the element's interior, at its start when the distance grows into the element (the centreline is
+// C^1, so a minimum at an element junction is found at the next element's start) or at the rod's
+// tip. Unlike a closest-point pair per element pair, the foot of a point is unique also along
+// parallel strands, so the energy is smooth there and converges with N to the continuum line contact.
+//
+// Which elements can touch: elements P and Q with |P - Q| <= m never count, m = max(1, ceil(pi h /
+// ell)) (the nodal rod's rule, rod3d/self_contact.hpp: a fold that brings the tube onto itself has an
 // arclength of at least pi h, and on a straight rod elements m + 1 apart are m ell >= pi h > 2h apart).
 //
 // Broad phase. Each element's arc is cut into c chords of arclength ell / c. A curve of curvature at
@@ -17,16 +32,14 @@
 // cutoff finds them all (c is chosen so that delta <= h / 10, at most 32 chords per element; beyond,
 // the cutoff grows with delta and stays a superset).
 //
-// Narrow phase. For a candidate pair (P, Q) the squared distance f(s, t) = 1/2 |r_P(s) - r_Q(t)|^2 on
-// [0, ell]^2 is minimised by projected Newton (exact gradient and Hessian from the element's tangent
-// n0 and its derivative R (q x e0)), started at the closest chord points, with backtracking on f. One
-// contact per element pair: an element is short against its radius of curvature where contact matters
-// (the fold rule above), so two arcs have a single local minimum of distance near their chords' one.
+// Narrow phase: projected Newton on f(t) = 1/2 |r - r_Q(t)|^2 over [0, ell] (exact derivatives from
+// the element's tangent n0 and its rate R (q x e0)), started from the closest chord points.
 //
-// Generalised force. At a minimiser (s*, t*) the distance's gradient in q is n . (dr_P/dq(s*) -
-// dr_Q/dq(t*)) (the envelope theorem: f is stationary in the free parameters, and a parameter at a
-// bound stays there to first order), n the unit vector from r_Q(t*) to r_P(s*); the contact's
-// generalised force is -phi'(d) times it. A test compares it with central differences of the energy.
+// Generalised force and Hessian. At a foot t* the distance's gradient is n . (dr_P/dq(s) - dr_Q/dq(t*))
+// (envelope theorem), n the unit vector from the foot to the point; a contact's generalised force is
+// its force times that. The Hessian (self_contact_hessian) adds the normal's rotation, the dead-load
+// stiffness of the held forces and the foot's motion (implicit function theorem on f'(t*) = 0).
+// Both are checked against central differences in the tests.
 #include <cstddef>
 #include <vector>
 
@@ -35,54 +48,52 @@
 
 namespace rodvv::solvers::superhelix {
 
-// SelfContact (radius h, barrier stiffness k) is declared in model.hpp.
+// SelfContact (radius h, barrier stiffness k per unit length) is declared in model.hpp.
 // InputError naming "radius" or "stiffness" unless finite and > 0.
 void validate(const SelfContact& contact);
 
 // m = max(1, ceil(pi h / ell)): elements at most m apart never count.
 std::size_t contact_excluded_elements(double radius, double element_length);
 
-// The closest points of the arcs of elements `first` and `second`, from a start (s0, t0).
-struct ArcClosestPoints {
-  double s = 0.0, t = 0.0;  // offsets on the two elements, in [0, ell]
-  Vec3 p = Vec3::Zero(), q = Vec3::Zero();
+// The foot of `point` on the arc of `element`: the t in [0, ell] minimising |point - r(t)|, by
+// projected Newton from t0. at_start / at_end: t is at that end with the distance growing into
+// the element (a constrained minimum).
+struct ArcFoot {
+  double t = 0.0;
+  Vec3 position = Vec3::Zero();
   double distance = 0.0;
   int iterations = 0;
 };
-ArcClosestPoints closest_points_on_arcs(const Kinematics& kinematics, std::size_t first, std::size_t second,
-                                        double s0, double t0);
+ArcFoot foot_on_arc(const Kinematics& kinematics, const Vec3& point, std::size_t element, double t0);
 
-// One pair of elements in contact (d < 2h).
+// One contact: a Gauss point of element `first` at offset s, its foot on element `second` at t.
 struct ArcContact {
-  std::size_t first = 0, second = 0;  // elements, first < second
-  double s = 0.0, t = 0.0;            // closest-point offsets on them, in [0, ell]
-  Vec3 p = Vec3::Zero(), q = Vec3::Zero();  // the closest points
+  std::size_t first = 0, second = 0;  // the point's element and the foot's, |first - second| > m
+  double s = 0.0, t = 0.0;            // offsets on them, in [0, ell]
+  double weight = 0.0;                // quadrature weight (length): w_g ell / 4 (half of each side's)
+  Vec3 p = Vec3::Zero(), q = Vec3::Zero();  // the point and its foot
   double distance = 0.0;
-  Vec3 normal = Vec3::Zero();  // unit, from q to p: the force on `first` is +force normal
-  double force = 0.0;          // k (2h - d)^2
+  Vec3 normal = Vec3::Zero();  // unit, from q to p: the force on the point is +force normal
+  double force = 0.0;          // weight k (2h - d)^2 (force)
 };
 
-// The pairs of elements in contact, sorted by (first, second), by the broad phase above.
-// SolverError when two arcs intersect (d = 0: no normal).
+// The contacts, sorted by (first, s, second), by the broad phase above. SolverError when a point
+// lies on another stretch's centreline (d = 0: no normal).
 std::vector<ArcContact> self_contacts(const Kinematics& kinematics, const SelfContact& contact);
-// The same from every pair of elements (O(N^2) pairs, each started from its best chord pair): the
-// oracle of the broad phase's tests.
+// The same from every pair of elements (O(N^2) pairs): the oracle of the broad phase's tests.
 std::vector<ArcContact> self_contacts_all_pairs(const Kinematics& kinematics, const SelfContact& contact);
 
-// Sum of the barrier energies of the pairs in contact.
+// Sum of weight psi(d) over the contacts.
 double self_contact_energy(const SelfContact& contact, const std::vector<ArcContact>& contacts);
-// The contact forces' generalised force Q = -dE/dq (size 3N): sum over pairs of
-// force (dr_P/dq(s)^T n - dr_Q/dq(t)^T n).
+// The contact forces' generalised force Q = -dE/dq (size 3N): sum of force (dr_P/dq(s)^T n - dr_Q/dq(t)^T n).
 VecX self_contact_generalized_force(const Kinematics& kinematics, const std::vector<ArcContact>& contacts);
 
-// The energy's Hessian d2E/dq2 (3N square, symmetric) at fixed contact set: with d(q) the pair's
-// distance at its minimiser z* = (s*, t*), J = dr_P/dq(s*) - dr_Q/dq(t*), phi' = -force:
-//   d2E = phi'' J^T n n^T J + phi' [ J^T (I - n n^T) J / d + n . d2(Delta)/dq2 - D_qz D_zz^+ D_zq ],
-// where n . d2(Delta)/dq2 is the dead-load stiffness of the unit forces +-n at the two points
-// (load_stiffness.hpp: point_load_jacobian), D_zz = d2|Delta|/dz2 and D_qz = d2|Delta|/dq dz over the
-// free parameters (a parameter at the end of its element stays there), by the implicit function
-// theorem on d|Delta|/dz = 0. A singular D_zz (arcs parallel along a valley of minimisers) is
-// pseudo-inverted. Tested against central differences of the generalised force.
+// The energy's Hessian d2E/dq2 (3N square, symmetric) at a fixed contact set: with J = dr_P/dq(s) -
+// dr_Q/dq(t*), per contact (weight w, force f = -w psi'):
+//   w psi'' J^T n n^T J - f [ J^T (I - n n^T) J / d + n . d2(Delta)/dq2 - D_qt D_tt^-1 D_tq ],
+// where n . d2(Delta)/dq2 is the dead-load stiffness of unit forces +-n at the two points
+// (load_stiffness.hpp: point_load_jacobian), D_tt = d2|Delta|/dt2 and D_qt = d2|Delta|/dq dt (a foot at
+// the end of its element stays there). Tested against central differences of the generalised force.
 MatX self_contact_hessian(const Kinematics& kinematics, const SelfContact& contact,
                           const std::vector<ArcContact>& contacts);
 

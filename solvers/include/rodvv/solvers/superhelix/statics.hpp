@@ -9,10 +9,14 @@
 // a dead end moment is not conservative for general 3-D rotations (Ziegler), so the Jacobian is
 // not symmetric in general and Newton works on r itself.
 // Self-contact (model.self_contact, radius > 0): r gains -Q_c, the barrier's generalised force
-// (self_contact.hpp; never scaled by the load factor), and the Jacobian its exact Hessian. Crossing
-// contacts (the knot's) converge as without contact; LINE contacts (parallel arcs along a ply or a
-// spring's turns) do not yet: one closest-point pair per element pair has no unique minimiser there,
-// so the contact point and its force jump with q and Newton's line search stalls (SolverError).
+// (self_contact.hpp; never scaled by the load factor), and the Jacobian its exact Hessian. The
+// equilibrium then minimises the potential (static_potential; a dead end moment, which has none, is
+// refused), and Newton is globalised on it, not on |r|: a barrier makes |r| non-convex enough that
+// its line search stalls at minima of |r| that are no equilibria. Direction (H + mu K) d = -r with
+// the smallest Levenberg shift mu (0, else from 1e-6 by x 10; after a full step mu / 10) that makes
+// the matrix positive definite (Cholesky); Armijo 1e-4 on the potential, or a step that halves |r|_inf
+// (near the solution the potential's decrease drowns in rounding); and no Gauss point moves by more
+// than h per step, so that no strand passes through another. Same convergence test as Newton.
 //
 // Newton (newton.hpp, shared with the super-clothoid): the exact Jacobian dr/dq = K - lambda dF_ext/dq
 // (load_stiffness.hpp, O(N^2); it replaced central differences of the residual, whose ~1e-11
@@ -33,6 +37,9 @@
 namespace rodvv::solvers::superhelix {
 
 VecX static_residual(const RodModel& model, const VecX& q, double load_factor = 1.0);
+// 1/2 (q-q0)^T K (q-q0) + lambda (V_gravity - F_end . r_tip) + E_contact, whose gradient is
+// static_residual; InputError "end_moment" for a dead end moment (not conservative).
+double static_potential(const RodModel& model, const VecX& q, double load_factor = 1.0);
 MatX static_jacobian(const RodModel& model, const VecX& q, double load_factor = 1.0);
 StaticResult solve_static(const RodModel& model, const StaticOptions& options = {});
 
