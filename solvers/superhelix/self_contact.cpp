@@ -234,6 +234,34 @@ VecX self_contact_generalized_force(const Kinematics& kinematics, const std::vec
   return force;
 }
 
+double contact_field(const Kinematics& kinematics, const SelfContact& contact, std::size_t element, double sigma) {
+  validate(contact);
+  const contact::CubicBarrier law{contact.radius, contact.stiffness};
+  const std::size_t n = kinematics.elements();
+  const double ell = kinematics.element_length();
+  const std::size_t excluded = contact_excluded_elements(contact.radius, ell);
+  const Vec3 point = kinematics.position(element, sigma);
+  constexpr int kStarts = 4;  // the foot search starts at the nearest of 5 points of the arc
+  double field = 0.0;
+  for (std::size_t Q = 0; Q < n; ++Q) {
+    if (Q + excluded >= element && Q <= element + excluded) continue;
+    // An arc lies within ell / 2 (arclength) of its midpoint.
+    if ((kinematics.position(Q, 0.5 * ell) - point).norm() > 0.5 * ell + 2.0 * contact.radius) continue;
+    double start = 0.0, nearest = std::numeric_limits<double>::infinity();
+    for (int j = 0; j <= kStarts; ++j) {
+      const double t = ell * j / kStarts, distance = (kinematics.position(Q, t) - point).norm();
+      if (distance < nearest) {
+        nearest = distance;
+        start = t;
+      }
+    }
+    const ArcFoot foot = foot_on_arc(kinematics, point, Q, start);
+    if (foot.distance < 2.0 * contact.radius && is_local_minimum_of_curve(foot, ell, Q, n))
+      field += 0.5 * law.energy(foot.distance);
+  }
+  return field;
+}
+
 MatX self_contact_hessian(const Kinematics& kinematics, const SelfContact& contact,
                           const std::vector<ArcContact>& contacts) {
   const contact::CubicBarrier law{contact.radius, contact.stiffness};

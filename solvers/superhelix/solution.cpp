@@ -1,15 +1,35 @@
 #include "rodvv/solvers/superhelix/solution.hpp"
 
+#include <string>
+
+#include "rodvv/common/errors.hpp"
 #include "rodvv/solvers/superhelix/kinematics.hpp"
+#include "rodvv/solvers/superhelix/self_contact.hpp"
 
 namespace rodvv::solvers::superhelix {
 
 SpatialRodSolution make_solution(const RodModel& model, const VecX& q, std::string method) {
   validate(model);
-  require_statics_only_loads_absent(model, "the Super-Helix solution struct (n(s) from gravity and the end force)");
+  if (!model.point_forces.empty())
+    throw InputError("point_forces", "invalid parameter 'point_forces': the Super-Helix solution struct (n(s) from "
+                                     "gravity, the end force and self-contact) does not take forces at the Gauss "
+                                     "points; must be empty");
   const Kinematics kinematics(model, q);
   const std::size_t n = model.elements;
   const double ell = element_length(model);
+  // Self-contact: its point forces (each contact's force at the point and its reaction at the foot,
+  // at arclengths along the rod) enter n(s) = sum of the forces beyond s; V_eff(s) enters V.
+  struct PointForce {
+    double s;
+    Vec3 force;
+  };
+  std::vector<PointForce> contact_forces;
+  const bool contact = model.self_contact.radius > 0.0;
+  if (contact)
+    for (const auto& pair : self_contacts(kinematics, model.self_contact)) {
+      contact_forces.push_back({static_cast<double>(pair.first) * ell + pair.s, pair.force * pair.normal});
+      contact_forces.push_back({static_cast<double>(pair.second) * ell + pair.t, -pair.force * pair.normal});
+    }
   SpatialRodSolution solution;
   solution.method = std::move(method);
   solution.length = model.length;
@@ -19,6 +39,10 @@ SpatialRodSolution make_solution(const RodModel& model, const VecX& q, std::stri
     const Mat3 R = kinematics.frame(e, 0.5 * ell);
     const Vec3 r = kinematics.position(e, 0.5 * ell);
     append_station(solution, model, s, r, R, u, u_hat);
+    if (!contact) continue;
+    for (const auto& f : contact_forces)  // a force at the station itself counts half
+      solution.force_n.back() += (f.s > s ? 1.0 : f.s == s ? 0.5 : 0.0) * f.force;
+    solution.potential.back() += contact_field(kinematics, model.self_contact, e, 0.5 * ell);
   }
   append_vertices(solution, kinematics, n, ell);
   return solution;

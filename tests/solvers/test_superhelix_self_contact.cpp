@@ -12,10 +12,12 @@
 #include <vector>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/invariants/noether3d.hpp"
 #include "rodvv/solvers/superhelix/dynamics.hpp"
 #include "rodvv/solvers/superhelix/kinematics.hpp"
 #include "rodvv/solvers/superhelix/model.hpp"
 #include "rodvv/solvers/superhelix/self_contact.hpp"
+#include "rodvv/solvers/superhelix/solution.hpp"
 #include "rodvv/solvers/superhelix/statics.hpp"
 #include "rodvv/testing/tolerance.hpp"
 
@@ -297,6 +299,46 @@ TEST(SuperHelixSelfContact, StaticsPushesTheTurnsOfAnOverlappingSpringApart) {
     EXPECT_LT(closest, 0.06) << n;
     EXPECT_LT(sh::static_potential(model, result.q), sh::static_potential(model, helix.q(n)));
   }
+}
+
+// The spring at equilibrium: uniform natural strain, no loads, frictionless line contacts between its
+// turns, so H (PHYSICS.md §1.2) is one constant along the whole rod, through the contacts, when the
+// solution struct carries the contact forces in n(s) and the field V_eff = 1/2 sum psi(d) in V.
+// Measured spread over the stations / max |m| |u|: 5.3e-3, 6.7e-4, 9.0e-5 at N = 24, 48, 96 (order
+// 2.97, 2.90); with the full field (the nodal rod's pair-potential form) 2.9e-3 at N = 96, and it
+// stalls there (as without the field).
+TEST(SuperHelixSelfContact, NoetherQuantityIsConstantThroughTheSpringsLineContacts) {
+  const TightHelix helix;
+  std::vector<double> spreads;
+  for (const std::size_t n : {24, 48, 96}) {
+    sh::RodModel model = rod(n);
+    model.stiffness = Vec3(0.7, 1.3, 2.1);
+    model.natural_strain = helix.q(1);
+    model.self_contact = {0.03, 1.0e7};
+    const rodvv::SpatialRodSolution solution = sh::make_solution(model, sh::solve_static(model).q);
+    const std::vector<double> compact = rodvv::invariants::noether3d_compact(solution);
+    const std::vector<double> flattened = rodvv::invariants::noether3d_flattened(solution);
+    // The size of the terms H is made of: |m| |u| (the moment's work on the strain).
+    double scale = 0.0;
+    for (std::size_t i = 0; i < compact.size(); ++i)
+      scale = std::max(scale, solution.moment_m[i].norm() * solution.strain_u[i].norm());
+    double lo = INFINITY, hi = -INFINITY, lo_full = INFINITY, hi_full = -INFINITY;
+    for (std::size_t i = 0; i < compact.size(); ++i) {
+      lo = std::min(lo, compact[i]);
+      hi = std::max(hi, compact[i]);
+      const double full = compact[i] - solution.potential[i];  // V_eff doubled (no gravity: V = V_eff)
+      lo_full = std::min(lo_full, full);
+      hi_full = std::max(hi_full, full);
+      EXPECT_NEAR(compact[i], flattened[i], 1e-12 * scale);
+    }
+    spreads.push_back((hi - lo) / scale);
+    if (n == 96) {
+      EXPECT_LT(spreads.back(), 1.8e-4);  // measured 9.0e-5, x 2
+      EXPECT_GT((hi_full - lo_full) / scale, 10.0 * spreads.back()) << "the field's factor 1/2 is what H needs";
+    }
+  }
+  EXPECT_LT(spreads[1], 0.25 * spreads[0]);  // at least second order between the levels
+  EXPECT_LT(spreads[2], 0.25 * spreads[1]);
 }
 
 // The potential's gradient is the residual (central differences; gravity, an end force and contact).

@@ -88,6 +88,17 @@ double self_contact_energy(const SelfContact& contact, const std::vector<ArcCont
 // The contact forces' generalised force Q = -dE/dq (size 3N): sum of force (dr_P/dq(s)^T n - dr_Q/dq(t)^T n).
 VecX self_contact_generalized_force(const Kinematics& kinematics, const std::vector<ArcContact>& contacts);
 
+// The contact field V_eff(s) felt at the point (element, sigma), per unit length, for the Noether
+// quantity H = ... - V_eff (PHYSICS.md §1.2): half the barrier density of the point's feet,
+//   V_eff(s) = 1/2 sum_feet psi(d(s)).
+// Why half: in this model's continuum limit E = 1/2 int sum_feet psi(d(s)) ds, the force density at s
+// is the point's own pull -1/2 psi'(d) n plus the reactions of the points whose feet lie at s. The
+// reactions are normal to the rod at s (n is perpendicular to the tangent at a foot); the own pull's
+// tangential part is -1/2 psi'(d) n . t = -d/ds (1/2 psi(d(s))). So dH/ds = -f_c . t (PHYSICS.md
+// §1.2) integrates to H - 1/2 sum psi(d(s)) = const. (A symmetric pair potential U gives the full
+// field int U dsigma instead: the nodal rod's.)
+double contact_field(const Kinematics& kinematics, const SelfContact& contact, std::size_t element, double sigma);
+
 // The energy's Hessian d2E/dq2 (3N square, symmetric) at a fixed contact set: with J = dr_P/dq(s) -
 // dr_Q/dq(t*), per contact (weight w, force f = -w psi'):
 //   w psi'' J^T n n^T J - f [ J^T (I - n n^T) J / d + n . d2(Delta)/dq2 - D_qt D_tt^-1 D_tq ],

@@ -3,7 +3,9 @@
 //   stations at the element midpoints s = (Q + 1/2) ell, where the constant element strain is a
 //   second-order approximation of the continuous strain: position and frame (closed form),
 //   u = q_Q, v = e0, m = R K (q_Q - q0_Q) (constitutive law), n from force balance n' + f = 0 with
-//   the dead loads, n(s) = F_end + rho S g (L - s), V = -rho S g . r;
+//   the dead loads, n(s) = F_end + rho S g (L - s), V = -rho S g . r; with self-contact, n(s) also
+//   sums the contact forces beyond s (at the Gauss points and at their feet) and V adds the contact
+//   field V_eff(s) (self_contact.hpp: contact_field);
 //   vertices: the N + 1 element ends.
 #include <cstddef>
 #include <string>
