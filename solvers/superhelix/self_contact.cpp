@@ -267,7 +267,16 @@ MatX self_contact_hessian(const Kinematics& kinematics, const SelfContact& conta
   const contact::CubicBarrier law{contact.radius, contact.stiffness};
   const double ell = kinematics.element_length();
   const auto size = 3 * static_cast<Eigen::Index>(kinematics.elements());
-  MatX hessian = MatX::Zero(size, size);
+  // Every term but the held loads' is a weighted outer product u w u^T of a vector u = J^T v (J: 3 x 3N):
+  // phi'' (J^T n)(J^T n)^T, the normal's rotation -f/d J^T (I - n n^T) J = -f/d sum over an orthonormal
+  // pair b1, b2 perpendicular to n of (J^T b)(J^T b)^T, and the foot's motion +f/D_tt D_qt D_qt^T. They are
+  // gathered as columns sqrt(|w|) u and added by two symmetric rank-k updates (one product instead of
+  // four dense outer products per contact).
+  std::vector<VecX> positive, negative;
+  const auto gather = [&](VecX u, double w) {
+    if (w > 0.0) positive.push_back(std::sqrt(w) * u);
+    if (w < 0.0) negative.push_back(std::sqrt(-w) * u);
+  };
   // -f n . d2(Delta)/dq2 is the dead-load stiffness of the forces -f n at the point and +f n at the
   // foot (F = sum J^T f is linear in f).
   std::vector<PointLoad> held;
@@ -275,11 +284,10 @@ MatX self_contact_hessian(const Kinematics& kinematics, const SelfContact& conta
     const double d = pair.distance, f = pair.force, stiffness = pair.weight * law.force_rate(d);
     const Vec3& n = pair.normal;
     const MatX J = kinematics.position_jacobian(pair.first, pair.s) - kinematics.position_jacobian(pair.second, pair.t);
-    const Mat3 transverse = Mat3::Identity() - n * n.transpose();
-    const VecX gradient = J.transpose() * n;  // dd/dq
-    const MatX JT = transverse * J;           // (I - n n^T) J
-    hessian.noalias() += stiffness * gradient * gradient.transpose();
-    hessian.noalias() -= (f / d) * (J.transpose() * JT);
+    const Vec3 b1 = n.unitOrthogonal(), b2 = n.cross(b1);
+    gather(J.transpose() * n, stiffness);
+    gather(J.transpose() * b1, -f / d);
+    gather(J.transpose() * b2, -f / d);
     held.push_back({pair.first, pair.s, -f * n});
     held.push_back({pair.second, pair.t, f * n});
     if (!(pair.t > 0.0 && pair.t < ell)) continue;  // a foot at an end of the rod stays there
@@ -287,10 +295,19 @@ MatX self_contact_hessian(const Kinematics& kinematics, const SelfContact& conta
     const ArcPoint Q = arc_point(kinematics, pair.second, pair.t);
     const double Dtt = (1.0 - std::pow(n.dot(Q.tangent), 2)) / d - n.dot(Q.tangent_rate);
     if (!(Dtt > 0.0)) continue;
-    const VecX Dqt = -(JT.transpose() * Q.tangent) / d -
+    const Vec3 across = Q.tangent - n.dot(Q.tangent) * n;  // (I - n n^T) T_Q
+    const VecX Dqt = -(J.transpose() * across) / d -
                      kinematics.rotation_jacobian(pair.second, pair.t).transpose() * Q.tangent.cross(n);
-    hessian.noalias() += (f / Dtt) * Dqt * Dqt.transpose();
+    gather(Dqt, f / Dtt);
   }
+  MatX hessian = MatX::Zero(size, size);
+  for (const auto* group : {&positive, &negative}) {
+    if (group->empty()) continue;
+    MatX U(size, static_cast<Eigen::Index>(group->size()));
+    for (std::size_t j = 0; j < group->size(); ++j) U.col(static_cast<Eigen::Index>(j)) = (*group)[j];
+    hessian.selfadjointView<Eigen::Lower>().rankUpdate(U, group == &positive ? 1.0 : -1.0);
+  }
+  hessian.triangularView<Eigen::StrictlyUpper>() = hessian.transpose();
   hessian += point_load_jacobian(kinematics, held);
   return hessian;
 }

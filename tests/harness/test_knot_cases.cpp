@@ -10,6 +10,7 @@
 
 #include "../../harness/src/cases/knot/contact_profile.hpp"
 #include "../../harness/src/cases/knot/plectoneme_tying.hpp"
+#include "../../harness/src/cases/knot/superhelix_on_curve.hpp"
 #include "../../harness/src/cases/knot/trefoil_tying.hpp"
 #include "case_test_support.hpp"
 #include "rodvv/common/errors.hpp"
@@ -17,6 +18,8 @@
 #include "rodvv/solvers/rod3d/self_contact.hpp"
 #include "rodvv/solvers/rod3d/state.hpp"
 #include "rodvv/solvers/rod3d/statics.hpp"
+#include "rodvv/solvers/superhelix/kinematics.hpp"
+#include "rodvv/solvers/superhelix/self_contact.hpp"
 
 namespace {
 
@@ -29,11 +32,13 @@ namespace knot = rodvv::harness::knot_cases;
 
 const Case& named(const std::string& name) { return rodvv::testing::named_case(name); }
 
+Vec3 braid_end(const knot::BraidClosure& braid) { return knot::braid_closure_curve(braid).back(); }
+
 TEST(KnotCases, TrefoilPassesAtDefaultLevels) {
   const auto result = run_at_default_levels(named("knot/trefoil-nodal"));
   EXPECT_TRUE(result.passed()) << failing_gates(result);
   EXPECT_FALSE(result.gates.empty());
-  EXPECT_EQ(rodvv::testing::case_names_of_family("knot").size(), 2u);
+  EXPECT_EQ(rodvv::testing::case_names_of_family("knot").size(), 3u);
   // The report's contact-force profile beside H(s): zero on the tails, positive in the braid.
   const auto& series = result.levels.back().series;
   const auto profile = std::find_if(series.begin(), series.end(), [](const Series& s) { return s.name == "contact force p(s)"; });
@@ -125,6 +130,44 @@ TEST(KnotTying, TrefoilHoldsAndTheUnknotComesUndone) {
       EXPECT_GT(reach, 1.0 - 1e-6);
     }
   }
+}
+
+// The Super-Helix laid on a circle of radius R (sampled densely): every element is the circle's own arc,
+// kappa = 1/R about the binormal and no twist, to the dense polyline's chord error (Delta s)^2 / (8 R).
+TEST(KnotTying, SuperHelixLaidOnACircleIsTheCircle) {
+  const double R = 0.7;
+  std::vector<Vec3> circle;
+  const int samples = 20000;
+  for (int i = 0; i <= samples; ++i) {
+    const double phi = 1.5 * 3.14159265358979 * i / samples;  // three quarters of a turn
+    circle.emplace_back(0.3 + R * std::sin(phi), -0.2 + R * (1.0 - std::cos(phi)), 0.5);
+  }
+  const knot::LaidSuperHelix laid = knot::superhelix_on_curve(circle, 12, Vec3::UnitZ());
+  const double chord_error = std::pow(1.5 * 3.14159265358979 * R / samples, 2) / (8.0 * R);
+  EXPECT_LE(laid.max_miss, 4.0 * chord_error);
+  for (int e = 0; e < 12; ++e) {
+    EXPECT_NEAR(laid.q(3 * e), 0.0, 1e-6) << e;                    // no twist
+    EXPECT_NEAR(std::hypot(laid.q(3 * e + 1), laid.q(3 * e + 2)), 1.0 / R, 1e-5) << e;
+  }
+  EXPECT_NEAR(laid.length, 1.5 * 3.14159265358979 * R, 1e-8);
+  EXPECT_THROW(knot::superhelix_on_curve(circle, 12, Vec3::UnitX()), rodvv::InputError);  // normal along the tangent
+}
+
+// The Super-Helix on the trefoil case's braid closure: element ends within the miss the case reports
+// (0.31 h at N = 100, measured), and no strand closer to another than the contact distance.
+TEST(KnotTying, SuperHelixLaidOnTheBraidClosureFollowsIt) {
+  const double lambda = 0.5, h = 0.05;
+  const knot::BraidClosure braid{3, 1.25 * h, 10 * h, 0.6 * lambda, 3 * h, 2 * lambda};
+  const knot::LaidSuperHelix laid = knot::superhelix_on_curve(knot::braid_closure_curve(braid), 100, Vec3::UnitZ());
+  EXPECT_LT(laid.max_miss, 0.35 * h);
+  rodvv::solvers::superhelix::RodModel model;
+  model.elements = 100;
+  model.length = laid.length;
+  model.root_position = laid.root_position;
+  model.root_frame = laid.root_frame;
+  const rodvv::solvers::superhelix::Kinematics kinematics(model, laid.q);
+  EXPECT_TRUE(rodvv::solvers::superhelix::self_contacts(kinematics, {h, 1.0}).empty());
+  EXPECT_NEAR((kinematics.tip_position() - laid.root_position).x(), (braid_end(braid) - laid.root_position).x(), 0.35 * h);
 }
 
 // ---- the plectoneme ------------------------------------------------------------------------------

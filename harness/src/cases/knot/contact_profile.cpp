@@ -1,6 +1,9 @@
 #include "contact_profile.hpp"
 
+#include <map>
+
 #include "rodvv/harness/trajectory_metrics.hpp"
+#include "rodvv/solvers/contact/cubic_barrier.hpp"
 
 namespace rodvv::harness::knot_cases {
 
@@ -21,6 +24,19 @@ Series contact_force_series(const solvers::rod3d::RodModel& model,
   for (std::size_t i = 0; i < vertices; ++i) {
     s[i] = rod::vertex_arclength(model, i);
     p[i] = force[i].norm() / ebar;
+  }
+  return thin_series("contact force p(s)", "s", "p (force per length)", s, p);
+}
+
+Series contact_force_series(double element_length, const solvers::superhelix::SelfContact& contact,
+                            const std::vector<solvers::superhelix::ArcContact>& contacts) {
+  const solvers::contact::CubicBarrier law{contact.radius, contact.stiffness};
+  std::map<double, double> density;  // by arclength
+  for (const auto& c : contacts) density[static_cast<double>(c.first) * element_length + c.s] += law.force(c.distance);
+  std::vector<double> s, p;
+  for (const auto& [at, value] : density) {
+    s.push_back(at);
+    p.push_back(value);
   }
   return thin_series("contact force p(s)", "s", "p (force per length)", s, p);
 }

@@ -6,6 +6,7 @@
 #include "rodvv/harness/sweep_result.hpp"
 #include "rodvv/solvers/rod3d/model.hpp"
 #include "rodvv/solvers/rod3d/self_contact.hpp"
+#include "rodvv/solvers/superhelix/self_contact.hpp"
 
 namespace rodvv::harness::knot_cases {
 
@@ -14,5 +15,10 @@ namespace rodvv::harness::knot_cases {
 // barrier's own lumping, self_contact.hpp) and divided by the rest edge length; s = vertex_arclength.
 Series contact_force_series(const solvers::rod3d::RodModel& model,
                             const std::vector<solvers::rod3d::ContactPair>& contacts);
+
+// The same for the Super-Helix's line contact (superhelix/self_contact.hpp): at each Gauss point in
+// contact, its line force density k (2h - d)^2 summed over its feet; s = the point's arclength.
+Series contact_force_series(double element_length, const solvers::superhelix::SelfContact& contact,
+                            const std::vector<solvers::superhelix::ArcContact>& contacts);
 
 }  // namespace rodvv::harness::knot_cases

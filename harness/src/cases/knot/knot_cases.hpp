@@ -12,6 +12,7 @@ inline constexpr const char* kContactStaticsMethod =
     "pseudo-transient continuation (Kelley & Keyes 1998)";
 
 void add_trefoil_nodal(Registry& registry);     // open trefoil pulled by a dead load, nodal 3-D rod
+void add_trefoil_superhelix(Registry& registry);  // the same on the Super-Helix
 void add_plectoneme_nodal(Registry& registry);  // plectoneme with a free end loop, both ends clamped, nodal 3-D rod
 
 }  // namespace rodvv::harness::knot_cases

@@ -29,6 +29,7 @@
 #include "../case_builder.hpp"
 #include "contact_profile.hpp"
 #include "knot_cases.hpp"
+#include "loop_relations.hpp"
 #include "rodvv/common/errors.hpp"
 #include "rodvv/invariants/noether3d.hpp"
 #include "rodvv/solvers/rod3d/self_contact.hpp"
@@ -88,41 +89,16 @@ LevelOutput run(const Parameters& p, double level) {
   double deepest = 0.0;
   for (const auto& c : contacts) deepest = std::max(deepest, 1.0 - c.distance / (2.0 * h));
 
-  // The loose-knot relations (PHYSICS.md §5.1): at the stations where the tangent turns through
-  // perpendicular to the pull (t.e_x changes sign; kappa interpolated linearly in t.e_x), and at the
-  // apex of the loop, the station between the first and the last of them whose tangent points most
-  // against the pull.
-  std::vector<double> tx, kappa;
-  for (std::size_t i = 0; i < solution.s.size(); ++i) {
-    tx.push_back(solution.frame[i].col(0).x());
-    kappa.push_back(std::hypot(solution.strain_u[i][1], solution.strain_u[i][2]));
-  }
-  std::vector<std::size_t> turns;  // i: t.e_x changes sign between stations i and i + 1
-  double perpendicular_sum = 0.0;
-  for (std::size_t i = 0; i + 1 < tx.size(); ++i)
-    if ((tx[i] > 0) != (tx[i + 1] > 0)) {
-      const double u = tx[i] / (tx[i] - tx[i + 1]);
-      const double kappa_b = kappa[i] + u * (kappa[i + 1] - kappa[i]);
-      perpendicular_sum += 0.5 * k.B * kappa_b * kappa_b / k.T;
-      turns.push_back(i);
-    }
-  if (turns.size() < 2)
-    throw SolverError(kMethod, "no loop: the tangent turns through perpendicular to the pull at " +
-                                   std::to_string(turns.size()) + " stations (a tied knot's loop: 2)",
-                      result.iterations, result.residual);
-  std::size_t apex = turns.front() + 1;
-  for (std::size_t i = turns.front() + 1; i <= turns.back(); ++i)
-    if (tx[i] < tx[apex]) apex = i;
-  const double apex_ratio = k.B * kappa[apex] * kappa[apex] / (4.0 * k.T);
+  const LoopRelations loop = loop_relations(solution, k.B, k.T, kMethod, result.iterations, result.residual);
   // End shortening: the rod's length less the distance its ends span along the pull (root: the
   // support point, s = 0), against the loose loop's 4 lambda.
   const double span = (result.state.position[n] - model.root.position).x();
 
   LevelOutput output;
   output.metrics["H_deviation"] = value_sample(deviation, 1.0);  // in units of the tension
-  output.metrics["perpendicular_ratio"] = diagnostic(perpendicular_sum / double(turns.size()));
-  output.metrics["perpendicular_points"] = diagnostic(double(turns.size()));
-  output.metrics["apex_ratio"] = diagnostic(apex_ratio);
+  output.metrics["perpendicular_ratio"] = diagnostic(loop.perpendicular_ratio);
+  output.metrics["perpendicular_points"] = diagnostic(double(loop.perpendicular_points));
+  output.metrics["apex_ratio"] = diagnostic(loop.apex_ratio);
   output.metrics["shortening_ratio"] = diagnostic((model.length - span) / (4.0 * k.lambda()));
   add_noether3d_metrics(output, solution, k.T);
   output.metrics["contact_pairs"] = diagnostic(double(contacts.size()));

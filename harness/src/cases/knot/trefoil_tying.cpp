@@ -15,8 +15,10 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr int kSamples = 400;  // per piece of the dense curve (chord error ~ (arc / 400)^2 curvature)
 
+}  // namespace
+
 // The dense open curve, from the root tail's far end to the tip tail's far end (before the turn).
-std::vector<Vec3> dense_curve(const BraidClosure& k) {
+std::vector<Vec3> braid_closure_curve(const BraidClosure& k) {
   const double r = k.strand_offset, a = k.braid_half_length, rho = k.loop_radius, g = k.tail_offset;
   const double bottom = -r - 2.0 * rho;  // the lower arc's straight part
   std::vector<Vec3> core;
@@ -62,9 +64,7 @@ std::vector<Vec3> dense_curve(const BraidClosure& k) {
   return curve;
 }
 
-}  // namespace
-
-TiedRod tie_braid_closure(const BraidClosure& knot, std::size_t elements) {
+void validate(const BraidClosure& knot) {
   if (knot.half_twists < 1 || knot.half_twists % 2 == 0)
     throw InputError("half_twists", "invalid parameter 'half_twists': must be odd and >= 1 (got " +
                                         std::to_string(knot.half_twists) + ")");
@@ -73,9 +73,12 @@ TiedRod tie_braid_closure(const BraidClosure& knot, std::size_t elements) {
   require_positive("loop_radius", knot.loop_radius);
   require_positive("tail_offset", knot.tail_offset);
   require_positive("tail_length", knot.tail_length);
-  require_at_least("elements", elements, 3);
+}
 
-  return rod_on_curve(dense_curve(knot), elements, false);
+TiedRod tie_braid_closure(const BraidClosure& knot, std::size_t elements) {
+  validate(knot);
+  require_at_least("elements", elements, 3);
+  return rod_on_curve(braid_closure_curve(knot), elements, false);
 }
 
 PulledKnot pull_tied_rod(const TiedRod& tied, double B, double C, double T, const solvers::rod3d::SelfContact& contact) {

@@ -30,7 +30,12 @@ struct BraidClosure {
   double tail_length = 0.0;        // each tail's length
 };
 
-// InputError unless every length is finite and > 0 and half_twists is odd and >= 1, elements >= 3.
+// InputError unless every length is finite and > 0 and half_twists is odd and >= 1.
+void validate(const BraidClosure& knot);
+// The curve above, densely sampled (400 points per piece), from the root's tail end (at -x, tangent
+// e_x) to the tip's (at +x). Does not validate.
+std::vector<Vec3> braid_closure_curve(const BraidClosure& knot);
+// The nodal rod's vertices on it; InputError also for elements < 3.
 TiedRod tie_braid_closure(const BraidClosure& knot, std::size_t elements);
 
 // The tied rod as the knot cases pull it: inextensible, bending B about both axes, twisting C, root
