@@ -20,6 +20,9 @@
 //    one contact each, mu = 0.6) lying on a sphere along great circles, strand by strand (no
 //    strand-strand contact: each SOCQP is its own), S = 10 .. 1000 (10 000 contacts at S = 1000; the
 //    issue's target: under 5 s).
+//  - BM_SelfContacts / BM_SelfContactsAllPairs: the self-contacts of a coil spring whose turns touch
+//    (20 turns, every Gauss point in contact with the next and the previous turn) by the chord sort-and-sweep broad phase and by testing every element pair,
+//    N = 64 .. 1024 (issue 12: the broad phase vs N).
 // The fit exponent over N = 16 .. 1024 (issue: <= 1.1) is the least-squares slope of log(cpu time)
 // against log N of the BM_StepRecursive rows (e.g. from --benchmark_format=json).
 // The state is a curved, moving rod under gravity (set up outside the timed loop), with the model's
@@ -37,6 +40,7 @@
 #include "rodvv/solvers/superhelix/inverse_statics.hpp"
 #include "rodvv/solvers/superhelix/kinematics.hpp"
 #include "rodvv/solvers/superhelix/root_motion.hpp"
+#include "rodvv/solvers/superhelix/self_contact.hpp"
 #include "rodvv/solvers/superhelix/statics.hpp"
 
 namespace {
@@ -169,6 +173,31 @@ void BM_JacobianCentralDifference(benchmark::State& bench) {
   bench.SetComplexityN(bench.range(0));
 }
 
+// A spring of 20 turns of pitch 0.05 on L = 6 (|q| L = 40 pi), contact radius 0.03 (2h > the turn distance).
+sh::Kinematics spring(std::size_t n) {
+  sh::RodModel model;
+  model.length = 6.0;
+  model.elements = n;
+  const double omega = 40.0 * 3.141592653589793 / model.length, b = 0.05 / (2.0 * 3.141592653589793);
+  const double tau = b * omega * omega;
+  model.natural_strain = Vec3(tau, std::sqrt(omega * omega - tau * tau), 0.0);
+  rodvv::VecX q(3 * static_cast<Eigen::Index>(n));
+  for (std::size_t e = 0; e < n; ++e) q.segment<3>(3 * static_cast<Eigen::Index>(e)) = model.natural_strain;
+  return sh::Kinematics(model, q);
+}
+
+void BM_SelfContacts(benchmark::State& bench) {
+  const sh::Kinematics kinematics = spring(static_cast<std::size_t>(bench.range(0)));
+  for (auto _ : bench) benchmark::DoNotOptimize(sh::self_contacts(kinematics, {0.03, 1.0}).size());
+  bench.SetComplexityN(bench.range(0));
+}
+
+void BM_SelfContactsAllPairs(benchmark::State& bench) {
+  const sh::Kinematics kinematics = spring(static_cast<std::size_t>(bench.range(0)));
+  for (auto _ : bench) benchmark::DoNotOptimize(sh::self_contacts_all_pairs(kinematics, {0.03, 1.0}).size());
+  bench.SetComplexityN(bench.range(0));
+}
+
 void BM_InverseStatics(benchmark::State& bench) {
   const sh::RodModel model = heavy_model(static_cast<std::size_t>(bench.range(0)));
   const rodvv::VecX q = heavy_equilibrium(model);
@@ -236,6 +265,8 @@ BENCHMARK(BM_Statics)->RangeMultiplier(2)->Range(8, 256)->ArgName("N")->Unit(ben
 BENCHMARK(BM_ClothoidStatics)->RangeMultiplier(2)->Range(8, 64)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_JacobianExact)->RangeMultiplier(4)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_JacobianCentralDifference)->RangeMultiplier(4)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
+BENCHMARK(BM_SelfContacts)->RangeMultiplier(2)->Range(64, 1024)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
+BENCHMARK(BM_SelfContactsAllPairs)->RangeMultiplier(2)->Range(64, 1024)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_InverseStatics)->RangeMultiplier(4)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_InverseHairOnSphere)->RangeMultiplier(10)->Range(10, 1000)->ArgName("strands")->Unit(benchmark::kMillisecond)->Complexity(benchmark::oN);
 

@@ -75,7 +75,7 @@ StaticResult minimise_potential(const RodModel& model, const StaticOptions& opti
   if (!result.q.allFinite()) throw InputError("initial_q", "invalid parameter 'initial_q': must be finite");
   (void)static_potential(model, result.q);  // refuses a dead end moment before any work
   constexpr double kEps = std::numeric_limits<double>::epsilon();
-  const double max_motion = model.self_contact.radius;  // per step: no strand passes through another
+  const double max_motion = 1.5 * model.self_contact.radius;  // per step: no strand passes through another (header)
   const char* method = "superhelix potential Newton";
   for (std::size_t step = 1; step <= options.load_steps; ++step) {
     const double lambda = static_cast<double>(step) / static_cast<double>(options.load_steps);
@@ -111,7 +111,10 @@ StaticResult minimise_potential(const RodModel& model, const StaticOptions& opti
       }
       const Kinematics here(model, result.q);
       const double slope = residual.dot(direction);
-      double alpha = 1.0;
+      // A step that would move a point by more than the cap starts scaled down to it (not halved past it).
+      const double full_motion = largest_point_motion(here, Kinematics(model, result.q + direction));
+      const bool capped = full_motion > max_motion;
+      double alpha = capped ? 0.99 * max_motion / full_motion : 1.0;
       bool accepted = false;
       VecX trial_q, trial_residual;
       for (int halving = 0; halving <= 40; ++halving, alpha *= 0.5) {

@@ -12,11 +12,11 @@
 // but with tails 2 lambda long instead of 6 lambda: a Super-Helix has equal elements, and the shorter
 // rod puts them where the knot is (ell = 1.7 h at N = 50). The rod is laid on the curve element by
 // element (superhelix_on_curve.hpp) and relaxed at the full load by the statics with self-contact
-// (superhelix/statics.hpp: Newton on the potential, Levenberg shift, at most h of motion per step).
+// (superhelix/statics.hpp: Newton on the potential, Levenberg shift, at most 1.5 h of motion per step).
 // N = 25 (ell = 3.4 h) cannot hold the braid: the knot comes undone.
 //
 // Measured (N = 50, 100, 200; looseness 0.1, barrier 500): max |H - T|/T = 0.0696, 0.0163, 0.0086
-// (least-squares order 1.51: 2.1 then 0.92), 215, 212, 213 Newton iterations, 0.35, 1.5, 13.7 s.
+// (least-squares order 1.51: 2.1 then 0.92), 141, 135, 134 Newton iterations, 0.2, 1.0, 6 s.
 // The error mixes an O(h^2) part (midpoint stations of constant-strain elements) and an O(h) part (the
 // contact forces act at Gauss points and feet, so n(s) jumps by one quadrature point's force).
 #include <cmath>
@@ -45,7 +45,7 @@ using namespace cases;
 constexpr const char* kMethod =
     "Super-Helix (Bertails et al. 2006) with a C^2 line-contact barrier (k/3)(2h - d)^3 per unit length between "
     "Gauss points and their feet on the helical arcs (chord sort-and-sweep broad phase); statics by Newton on the "
-    "potential with its exact Hessian, Levenberg shift and at most h of motion per step";
+    "potential with its exact Hessian, Levenberg shift and at most 1.5 h of motion per step";
 
 struct Knot {
   double B, C, T, looseness, barrier;
@@ -77,7 +77,7 @@ LevelOutput run(const Parameters& p, double level) {
 
   sh::StaticOptions options;
   options.initial_q = laid.q;
-  options.max_iterations = 2000;  // measured: 212 - 215 at N = 50 .. 200
+  options.max_iterations = 2000;  // measured: 134 - 141 at N = 50 .. 200
   options.tolerance = 1e-10;
   const sh::StaticResult result = sh::solve_static(model, options);
 

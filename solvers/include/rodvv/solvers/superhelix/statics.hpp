@@ -16,7 +16,10 @@
 // the smallest Levenberg shift mu (0, else from 1e-6 by x 10; after a full step mu / 10) that makes
 // the matrix positive definite (Cholesky); Armijo 1e-4 on the potential, or a step that halves |r|_inf
 // (near the solution the potential's decrease drowns in rounding); and no Gauss point moves by more
-// than h per step, so that no strand passes through another. Same convergence test as Newton.
+// than 1.5 h per step (a longer step starts scaled down to that motion), so that no strand passes
+// through another: two strands in contact (d <= 2h) come out on each other's far side at the same
+// energy only after a relative motion of about 4h; 3h leaves them overlapping by h or more, a barrier
+// energy the line search rejects. Same convergence test as Newton.
 //
 // Newton (newton.hpp, shared with the super-clothoid): the exact Jacobian dr/dq = K - lambda dF_ext/dq
 // (load_stiffness.hpp, O(N^2); it replaced central differences of the residual, whose ~1e-11
