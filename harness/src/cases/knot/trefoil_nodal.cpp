@@ -29,13 +29,12 @@
 #include "../case_builder.hpp"
 #include "contact_profile.hpp"
 #include "knot_cases.hpp"
-#include "loop_relations.hpp"
 #include "rodvv/common/errors.hpp"
-#include "rodvv/invariants/noether3d.hpp"
 #include "rodvv/solvers/rod3d/self_contact.hpp"
 #include "rodvv/solvers/rod3d/solution.hpp"
 #include "rodvv/solvers/rod3d/state.hpp"
 #include "rodvv/solvers/rod3d/statics.hpp"
+#include "trefoil_metrics.hpp"
 #include "trefoil_tying.hpp"
 
 namespace rodvv::harness::knot_cases {
@@ -79,9 +78,6 @@ LevelOutput run(const Parameters& p, double level) {
   const auto result = rod::solve_static(model, pulled.start, options);
 
   const auto solution = rod::make_solution(model, result.state);
-  const auto flattened = invariants::noether3d_flattened(solution);
-  double deviation = 0.0;
-  for (double H : flattened) deviation = std::max(deviation, std::abs(H - k.T) / k.T);
   const auto contacts = rod::self_contacts(model.self_contact, result.state.position, rod::rest_edge_length(model));
   if (contacts.empty())
     throw SolverError(kMethod, "the knot came undone: no self-contact at equilibrium", result.iterations,
@@ -89,18 +85,11 @@ LevelOutput run(const Parameters& p, double level) {
   double deepest = 0.0;
   for (const auto& c : contacts) deepest = std::max(deepest, 1.0 - c.distance / (2.0 * h));
 
-  const LoopRelations loop = loop_relations(solution, k.B, k.T, kMethod, result.iterations, result.residual);
-  // End shortening: the rod's length less the distance its ends span along the pull (root: the
-  // support point, s = 0), against the loose loop's 4 lambda.
+  // The ends' span along the pull (root: the support point, s = 0), for the end shortening.
   const double span = (result.state.position[n] - model.root.position).x();
 
   LevelOutput output;
-  output.metrics["H_deviation"] = value_sample(deviation, 1.0);  // in units of the tension
-  output.metrics["perpendicular_ratio"] = diagnostic(loop.perpendicular_ratio);
-  output.metrics["perpendicular_points"] = diagnostic(double(loop.perpendicular_points));
-  output.metrics["apex_ratio"] = diagnostic(loop.apex_ratio);
-  output.metrics["shortening_ratio"] = diagnostic((model.length - span) / (4.0 * k.lambda()));
-  add_noether3d_metrics(output, solution, k.T);
+  add_trefoil_metrics(output, solution, k.B, k.T, span, {kMethod, result.iterations, result.residual});
   output.metrics["contact_pairs"] = diagnostic(double(contacts.size()));
   output.series.push_back(contact_force_series(model, contacts));
   output.metrics["deepest_overlap"] = diagnostic(deepest);
@@ -113,14 +102,7 @@ LevelOutput run(const Parameters& p, double level) {
 
 void add_trefoil_nodal(Registry& registry) {
   const double h = 1.0 / 200.0;
-  std::vector<MetricSpec> metrics{
-      invariant_metric("H_deviation", "max_s |H(s) - T| / T through the knot, V_eff of the barrier included", 1.0)};
-  for (auto& spec : noether3d_metric_specs(true, std::nullopt)) metrics.push_back(std::move(spec));
-  metrics.push_back(diagnostic_metric("perpendicular_ratio",
-                                      "mean of 1/2 B kappa^2 / T where t is perpendicular to the pull (loose limit: 1)"));
-  metrics.push_back(diagnostic_metric("perpendicular_points", "where t.e_x changes sign (the loose loop: 2)"));
-  metrics.push_back(diagnostic_metric("apex_ratio", "B kappa_apex^2 / (4 T) at the apex (loose limit: 1)"));
-  metrics.push_back(diagnostic_metric("shortening_ratio", "(L - end span along the pull) / (4 sqrt(B/T)) (loose limit: 1)"));
+  std::vector<MetricSpec> metrics = trefoil_metric_specs();
   metrics.push_back(diagnostic_metric("contact_pairs", "segment pairs closer than 2h at equilibrium"));
   metrics.push_back(diagnostic_metric("deepest_overlap", "largest (2h - d) / 2h over the contacts"));
   metrics.push_back(diagnostic_metric("iterations", "Newton iterations of the pseudo-transient relaxation"));
@@ -138,14 +120,12 @@ void add_trefoil_nodal(Registry& registry) {
        "the braid sigma_1^3 and relaxed with frictionless self-contact (barrier) of radius h = looseness sqrt(B/T).",
        "H(s) = T at every s, through the braid (Noether, frictionless contact; PHYSICS.md §1.2, §5.1)",
        "Audoly, Clauvelin & Neukirch 2007 (PRL 99:164301); PHYSICS.md §5.1", kMethod},
-      {make_parameter("B", 1.3, 0.0, 1e12, true, false, "force length^2", "bending stiffness EI1 = EI2"),
-       make_parameter("C", 0.9, 0.0, 1e12, true, false, "force length^2", "twisting stiffness GJ"),
-       make_parameter("T", 5.2, 0.0, 1e12, true, false, "force", "dead pull at the tip"),
-       // From 0.07 (measured 2026-11-26 over barrier 50 .. 5000 and C/B 0.3 .. 100): at 0.05 the knot of
-       // the coarsest level (50 edges) comes undone (no self-contact at equilibrium: the thinner strands
-       // passed through each other), at 0.06 with barrier 5000 the H deviation's order is 1.53.
-       make_parameter("looseness", 0.1, 0.07, 0.15, false, false, "", "h sqrt(T/B), the rod's radius in knot units"),
-       make_parameter("barrier", 500.0, 50.0, 5000.0, false, false, "", "barrier stiffness k h^2 / T")},
+      // From 0.07 (measured 2026-11-26 over barrier 50 .. 5000 and C/B 0.3 .. 100): at 0.05 the knot of
+      // the coarsest level (50 edges) comes undone (no self-contact at equilibrium: the thinner strands
+      // passed through each other), at 0.06 with barrier 5000 the H deviation's order is 1.53.
+      trefoil_parameters(
+          make_parameter("looseness", 0.1, 0.07, 0.15, false, false, "", "h sqrt(T/B), the rod's radius in knot units"),
+          make_parameter("barrier", 500.0, 50.0, 5000.0, false, false, "", "barrier stiffness k h^2 / T")),
       element_levels("number of edges", {50, 100, 200}, {50, 100, 200, 400}), std::move(metrics), std::move(gates),
       run);
   // The knot is posed in units of sqrt(B/T) (B = 1e12 with C scaled alike, T = 1e-3 .. 1e12 pass), so what

@@ -25,14 +25,13 @@
 #include "../case_builder.hpp"
 #include "contact_profile.hpp"
 #include "knot_cases.hpp"
-#include "loop_relations.hpp"
 #include "rodvv/common/errors.hpp"
 #include "rodvv/harness/gate.hpp"
-#include "rodvv/invariants/noether3d.hpp"
 #include "rodvv/solvers/superhelix/self_contact.hpp"
 #include "rodvv/solvers/superhelix/solution.hpp"
 #include "rodvv/solvers/superhelix/statics.hpp"
 #include "superhelix_on_curve.hpp"
+#include "trefoil_metrics.hpp"
 #include "trefoil_tying.hpp"
 
 namespace rodvv::harness::knot_cases {
@@ -90,20 +89,10 @@ LevelOutput run(const Parameters& p, double level) {
   for (const auto& c : contacts) deepest = std::max(deepest, 1.0 - c.distance / (2.0 * h));
 
   const SpatialRodSolution solution = sh::make_solution(model, result.q);
-  double deviation = 0.0;
-  for (double H : invariants::noether3d_flattened(solution)) deviation = std::max(deviation, std::abs(H - k.T) / k.T);
-  const LoopRelations loop = loop_relations(solution, k.B, k.T, kMethod, result.iterations, result.residual);
-  // End shortening: the rod's length less the distance its ends span along the pull, against the loose
-  // loop's 4 lambda.
-  const double span = (kinematics.tip_position() - model.root_position).x();
+  const double span = (kinematics.tip_position() - model.root_position).x();  // the ends' span along the pull
 
   LevelOutput output;
-  output.metrics["H_deviation"] = value_sample(deviation, 1.0);  // in units of the tension
-  output.metrics["perpendicular_ratio"] = diagnostic(loop.perpendicular_ratio);
-  output.metrics["perpendicular_points"] = diagnostic(double(loop.perpendicular_points));
-  output.metrics["apex_ratio"] = diagnostic(loop.apex_ratio);
-  output.metrics["shortening_ratio"] = diagnostic((model.length - span) / (4.0 * lambda));
-  add_noether3d_metrics(output, solution, k.T);
+  add_trefoil_metrics(output, solution, k.B, k.T, span, {kMethod, result.iterations, result.residual});
   output.metrics["contact_points"] = diagnostic(double(contacts.size()));
   output.series.push_back(contact_force_series(kinematics.element_length(), model.self_contact, contacts));
   output.metrics["deepest_overlap"] = diagnostic(deepest);
@@ -117,14 +106,7 @@ LevelOutput run(const Parameters& p, double level) {
 
 void add_trefoil_superhelix(Registry& registry) {
   const double h = 1.0 / 200.0;
-  std::vector<MetricSpec> metrics{
-      invariant_metric("H_deviation", "max_s |H(s) - T| / T through the knot, V_eff of the barrier included", 1.0)};
-  for (auto& spec : noether3d_metric_specs(true, std::nullopt)) metrics.push_back(std::move(spec));
-  metrics.push_back(diagnostic_metric("perpendicular_ratio",
-                                      "mean of 1/2 B kappa^2 / T where t is perpendicular to the pull (loose limit: 1)"));
-  metrics.push_back(diagnostic_metric("perpendicular_points", "where t.e_x changes sign (the loose loop: 2)"));
-  metrics.push_back(diagnostic_metric("apex_ratio", "B kappa_apex^2 / (4 T) at the apex (loose limit: 1)"));
-  metrics.push_back(diagnostic_metric("shortening_ratio", "(L - end span along the pull) / (4 sqrt(B/T)) (loose limit: 1)"));
+  std::vector<MetricSpec> metrics = trefoil_metric_specs();
   metrics.push_back(diagnostic_metric("contact_points", "Gauss-point contacts (a point and a foot closer than 2h)"));
   metrics.push_back(diagnostic_metric("deepest_overlap", "largest (2h - d) / 2h over the contacts"));
   metrics.push_back(diagnostic_metric("laying_miss", "largest miss of the laid rod's element ends from the curve / h"));
@@ -144,11 +126,9 @@ void add_trefoil_superhelix(Registry& registry) {
        "arcs) of radius h = looseness sqrt(B/T).",
        "H(s) = T at every s, through the braid (Noether, frictionless contact; PHYSICS.md §1.2, §5.1)",
        "Audoly, Clauvelin & Neukirch 2007 (PRL 99:164301); Bertails et al. 2006; PHYSICS.md §5.1", kMethod},
-      {make_parameter("B", 1.3, 0.0, 1e12, true, false, "force length^2", "bending stiffness EI1 = EI2"),
-       make_parameter("C", 0.9, 0.0, 1e12, true, false, "force length^2", "twisting stiffness GJ"),
-       make_parameter("T", 5.2, 0.0, 1e12, true, false, "force", "dead pull at the tip"),
-       make_parameter("looseness", 0.1, 0.08, 0.12, false, false, "", "h sqrt(T/B), the rod's radius in knot units"),
-       make_parameter("barrier", 500.0, 50.0, 5000.0, false, false, "", "barrier stiffness k h^3 / T (per unit length)")},
+      trefoil_parameters(
+          make_parameter("looseness", 0.1, 0.08, 0.12, false, false, "", "h sqrt(T/B), the rod's radius in knot units"),
+          make_parameter("barrier", 500.0, 50.0, 5000.0, false, false, "", "barrier stiffness k h^3 / T (per unit length)")),
       element_levels("number of elements", {50, 100, 200}, {50, 100, 200, 400}), std::move(metrics),
       std::move(gates), run);
   // Measured at the window's corners (default levels, 2026-11-27): looseness 0.08 and 0.12, barrier 50 and

@@ -1,0 +1,48 @@
+#pragma once
+// What the trefoil cases of both rods share: the rod and its pull (parameters B, C, T), and what they
+// measure on their solution struct: H through the knot, the 3-D Noether metrics, and the loose-knot
+// relations of the loop (PHYSICS.md §5.1, the tension elastica homoclinic). The rod-specific metrics
+// (contacts, iterations) and parameters (looseness, barrier windows) are each case's own.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "rodvv/common/spatial_rod.hpp"
+#include "rodvv/harness/case.hpp"
+#include "rodvv/harness/parameters.hpp"
+
+namespace rodvv::harness::knot_cases {
+
+struct LoopRelations {
+  double perpendicular_ratio = 0.0;  // mean 1/2 B kappa^2 / T where t.e_x changes sign (loose limit 1)
+  std::size_t perpendicular_points = 0;
+  double apex_ratio = 0.0;  // B kappa_apex^2 / (4 T) (loose limit 1)
+};
+
+// At the stations where the tangent turns through perpendicular to the pull e_x (t.e_x changes sign;
+// kappa interpolated linearly in t.e_x), and at the apex of the loop: the station between the first
+// and the last of them whose tangent points most against the pull. kappa = |(u1, u2)| (u0 = twist).
+// SolverError(method, ...) with the solve's iterations and residual when there is no loop (fewer
+// than 2 such points).
+LoopRelations loop_relations(const SpatialRodSolution& solution, double B, double T, const std::string& method,
+                             std::size_t iterations, double residual);
+
+// The solve that produced a trefoil's solution struct, for the error a lost loop reports.
+struct TrefoilSolve {
+  std::string method;
+  std::size_t iterations = 0;
+  double residual = 0.0;
+};
+
+// H_deviation = max_s |H(s) - T| / T (flattened form), the Noether metrics with H = T exact, the loop
+// relations, and the end shortening (L - span) / (4 sqrt(B/T)), span = the ends' distance along the pull.
+void add_trefoil_metrics(LevelOutput& output, const SpatialRodSolution& solution, double B, double T, double span,
+                         const TrefoilSolve& solve);
+// Their specs, in that order.
+std::vector<MetricSpec> trefoil_metric_specs();
+
+// B = 1.3 (EI1 = EI2), C = 0.9 (GJ), T = 5.2 (the dead pull), each in (0, 1e12], then the case's own
+// looseness and barrier.
+Parameters trefoil_parameters(Parameter looseness, Parameter barrier);
+
+}  // namespace rodvv::harness::knot_cases
