@@ -135,7 +135,10 @@ StaticResult minimise_potential(const RodModel& model, const StaticOptions& opti
       const bool round_off_step = direction.lpNorm<Eigen::Infinity>() * scales.length <=
                                   64.0 * kEps * (1.0 + result.q.lpNorm<Eigen::Infinity>() * scales.length);
       if (!accepted) {
-        if (round_off_step || norm <= 1e3 * options.tolerance * scale) break;  // at the residual's floor
+        if (round_off_step || norm <= 1e3 * options.tolerance * scale) {
+          converged = true;  // already at the round-off floor of the residual
+          break;
+        }
         throw SolverError(method, "line search failed at load factor " + format_value(lambda), result.iterations,
                           norm);
       }
@@ -147,7 +150,7 @@ StaticResult minimise_potential(const RodModel& model, const StaticOptions& opti
     result.residual = residual.lpNorm<Eigen::Infinity>();
     const double scale = std::max({scales.stiffness_max * result.q.lpNorm<Eigen::Infinity>(),
                                    scales.stiffness_max / scales.length, scales.load_scale});
-    if (!converged && result.residual > 1e3 * options.tolerance * scale)
+    if (!converged && result.residual > options.tolerance * scale)
       throw SolverError(method, "no convergence at load factor " + format_value(lambda), result.iterations,
                         result.residual);
   }

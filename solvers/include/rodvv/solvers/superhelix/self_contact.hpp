@@ -56,8 +56,8 @@ void validate(const SelfContact& contact);
 std::size_t contact_excluded_elements(double radius, double element_length);
 
 // The foot of `point` on the arc of `element`: the t in [0, ell] minimising |point - r(t)|, by
-// projected Newton from t0. at_start / at_end: t is at that end with the distance growing into
-// the element (a constrained minimum).
+// projected Newton from t0; t = 0 or ell when the minimum over the arc is at that end (the distance
+// growing into the element).
 struct ArcFoot {
   double t = 0.0;
   Vec3 position = Vec3::Zero();
