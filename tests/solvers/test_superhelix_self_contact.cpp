@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <map>
+#include <string>
 #include <utility>
 #include <numbers>
 #include <vector>
@@ -275,6 +276,17 @@ TEST(SuperHelixSelfContact, StaticsSeparatesARestShapeThatCrossesItself) {
     difference.col(j) = (sh::static_residual(model, plus) - sh::static_residual(model, minus)) / (2 * h);
   }
   EXPECT_LE((jacobian - difference).cwiseAbs().maxCoeff(), 1e-6 * jacobian.cwiseAbs().maxCoeff());
+  // Out of iterations: a SolverError naming the method, its iterations and the residual.
+  sh::StaticOptions two;
+  two.max_iterations = 2;
+  try {
+    (void)sh::solve_static(model, two);
+    ADD_FAILURE() << "two iterations converged";
+  } catch (const rodvv::SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("superhelix potential Newton"), std::string::npos) << e.what();
+    EXPECT_EQ(e.iterations(), 2u);
+    EXPECT_GT(e.residual(), 0.0);
+  }
   // Without contact the same rod stays at its rest shape.
   model.self_contact = {};
   EXPECT_LE((sh::solve_static(model).q - rest).cwiseAbs().maxCoeff(), 0.0);
