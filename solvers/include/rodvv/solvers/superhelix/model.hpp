@@ -35,7 +35,7 @@ namespace rodvv::solvers::superhelix {
 // Frictionless self-contact through the cubic barrier (self_contact.hpp; statics only).
 struct SelfContact {
   double radius = 0.0;     // h > 0: contact when two arcs are closer than 2h (0 in a model: none)
-  double stiffness = 0.0;  // k > 0, force / length^2 (the cubic barrier's)
+  double stiffness = 0.0;  // k > 0, force / length^3: the cubic barrier's, per unit length of rod
 };
 
 struct RodModel {

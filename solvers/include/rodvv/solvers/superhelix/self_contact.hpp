@@ -15,10 +15,12 @@
 // quadrature (model.gauss_points per element, the points of Kinematics::points()): one contact per
 // Gauss point and foot, carrying its weight w ell / 2 (times 1/2). A foot is the minimiser of the
 // point's distance to one element's arc, kept when it is a local minimum along the whole curve: in
-// the element's interior, at its start when the distance grows into the element (the centreline is
-// C^1, so a minimum at an element junction is found at the next element's start) or at the rod's
-// tip. Unlike a closest-point pair per element pair, the foot of a point is unique also along
-// parallel strands, so the energy is smooth there and converges with N to the continuum line contact.
+// the element's interior, or at an end of the rod (the root's start, the tip's end) with the distance
+// growing into the rod. A minimum at an end of any other element is not one of the curve's: the
+// centreline is C^1, so the distance keeps falling into the neighbouring element, whose search finds
+// it (a minimum exactly at a junction, with zero slope, is lost only to round-off). Unlike a
+// closest-point pair per element pair, the foot of a point is unique also along parallel strands, so
+// the energy is smooth there and converges with N to the continuum line contact.
 //
 // Which elements can touch: elements P and Q with |P - Q| <= m never count, m = max(1, ceil(pi h /
 // ell)) (the nodal rod's rule, rod3d/self_contact.hpp: a fold that brings the tube onto itself has an
@@ -33,7 +35,8 @@
 // the cutoff grows with delta and stays a superset).
 //
 // Narrow phase: projected Newton on f(t) = 1/2 |r - r_Q(t)|^2 over [0, ell] (exact derivatives from
-// the element's tangent n0 and its rate R (q x e0)), started from the closest chord points.
+// the element's tangent n0 and its rate R (q x e0)), started at the element's chord vertex nearest to
+// the point.
 //
 // Generalised force and Hessian. At a foot t* the distance's gradient is n . (dr_P/dq(s) - dr_Q/dq(t*))
 // (envelope theorem), n the unit vector from the foot to the point; a contact's generalised force is
