@@ -11,7 +11,8 @@ namespace rodvv::solvers::contact {
 
 struct CubicBarrier {
   double radius = 0.0;     // h > 0: the tube's radius (contact distance 2h)
-  double stiffness = 0.0;  // k > 0: force / length^2 per segment pair (nodal rod), force / length^3 per unit length (Super-Helix)
+  // k > 0: force / length^2 per segment pair (nodal rod), force / length^3 per unit length (Super-Helix)
+  double stiffness = 0.0;
 
   double overlap(double distance) const { return std::max(0.0, 2.0 * radius - distance); }
   // phi(d)
