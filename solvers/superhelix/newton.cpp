@@ -51,27 +51,39 @@ VecX newton_direction(const MatX& J, const VecX& residual) {
   return -J.partialPivLu().solve(residual);
 }
 
-StaticResult newton_load_stepping(const StaticResidual& static_residual, const VecX& q0,
-                                  const NewtonScales& scales, const StaticOptions& options,
-                                  const std::string& method, const StaticJacobian& jacobian) {
+double NewtonScales::residual_scale(const VecX& q) const {
+  return std::max({stiffness_max * q.lpNorm<Eigen::Infinity>(), stiffness_max / length, load_scale});
+}
+
+bool NewtonScales::round_off_step(const VecX& direction, const VecX& q) const {
+  constexpr double kEps = std::numeric_limits<double>::epsilon();
+  return direction.lpNorm<Eigen::Infinity>() * length <= 64.0 * kEps * (1.0 + q.lpNorm<Eigen::Infinity>() * length);
+}
+
+VecX newton_start(const StaticOptions& options, const VecX& q0) {
   require_at_least("load_steps", options.load_steps, 1);
   require_at_least("max_iterations", options.max_iterations, 1);
   require_open_interval("tolerance", options.tolerance, 0.0, 1.0);
-  StaticResult result;
-  result.q = options.initial_q.size() == 0 ? q0 : options.initial_q;
-  if (result.q.size() != q0.size())
+  const VecX start = options.initial_q.size() == 0 ? q0 : options.initial_q;
+  if (start.size() != q0.size())
     throw InputError("initial_q", "invalid parameter 'initial_q': must be empty or hold " +
                                       std::to_string(q0.size()) + " values (one per degree of freedom)");
-  if (!result.q.allFinite()) throw InputError("initial_q", "invalid parameter 'initial_q': must be finite");
-  const double k_max = scales.stiffness_max, length = scales.length, load_scale = scales.load_scale;
-  constexpr double kEps = std::numeric_limits<double>::epsilon();
+  if (!start.allFinite()) throw InputError("initial_q", "invalid parameter 'initial_q': must be finite");
+  return start;
+}
+
+StaticResult newton_load_stepping(const StaticResidual& static_residual, const VecX& q0,
+                                  const NewtonScales& scales, const StaticOptions& options,
+                                  const std::string& method, const StaticJacobian& jacobian) {
+  StaticResult result;
+  result.q = newton_start(options, q0);
 
   for (std::size_t step = 1; step <= options.load_steps; ++step) {
     const double lambda = static_cast<double>(step) / static_cast<double>(options.load_steps);
     VecX residual = static_residual(result.q, lambda);
     bool converged = false;
     for (std::size_t iteration = 0; iteration < options.max_iterations; ++iteration) {
-      const double scale = std::max({k_max * result.q.lpNorm<Eigen::Infinity>(), k_max / length, load_scale});
+      const double scale = scales.residual_scale(result.q);
       const double norm = residual.lpNorm<Eigen::Infinity>();
       check_time_budget("superhelix Newton", result.iterations, norm);
       if (norm <= options.tolerance * scale) {
@@ -80,7 +92,7 @@ StaticResult newton_load_stepping(const StaticResidual& static_residual, const V
       }
       ++result.iterations;
       const MatX J = jacobian ? jacobian(result.q, lambda)
-                              : central_difference_jacobian(static_residual, result.q, lambda, length);
+                              : central_difference_jacobian(static_residual, result.q, lambda, scales.length);
       const VecX direction = newton_direction(J, residual);
       if (!direction.allFinite()) throw SolverError(method, "singular Jacobian", result.iterations, norm);
       // backtracking on 1/2 |r|^2
@@ -96,8 +108,7 @@ StaticResult newton_load_stepping(const StaticResidual& static_residual, const V
           break;
         }
       }
-      const bool round_off_step = direction.lpNorm<Eigen::Infinity>() * length <=
-                                  64.0 * kEps * (1.0 + result.q.lpNorm<Eigen::Infinity>() * length);
+      const bool round_off_step = scales.round_off_step(direction, result.q);
       if (!accepted) {
         if (round_off_step || norm <= 1e3 * options.tolerance * scale) {
           converged = true;  // already at the round-off floor of the residual
@@ -114,12 +125,9 @@ StaticResult newton_load_stepping(const StaticResidual& static_residual, const V
       }
     }
     result.residual = residual.lpNorm<Eigen::Infinity>();
-    if (!converged) {
-      const double scale = std::max({k_max * result.q.lpNorm<Eigen::Infinity>(), k_max / length, load_scale});
-      if (result.residual > options.tolerance * scale)
-        throw SolverError(method, "no convergence at load factor " + format_value(lambda), result.iterations,
-                          result.residual);
-    }
+    if (!converged && result.residual > options.tolerance * scales.residual_scale(result.q))
+      throw SolverError(method, "no convergence at load factor " + format_value(lambda), result.iterations,
+                        result.residual);
   }
   return result;
 }

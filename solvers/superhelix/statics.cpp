@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <utility>
+#include <vector>
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/time_budget.hpp"
@@ -17,37 +20,66 @@
 
 namespace rodvv::solvers::superhelix {
 
-VecX static_residual(const RodModel& model, const VecX& q, double load_factor) {
-  const Kinematics kinematics(model, q);
+namespace {
+
+// A configuration with what every static quantity needs from it: its kinematics and, with
+// self-contact, its contacts (found once, shared by the residual, the potential and the Jacobian).
+struct Configuration {
+  Configuration(const RodModel& model, Kinematics at)
+      : kinematics(std::move(at)),
+        contacts(model.self_contact.radius > 0.0 ? self_contacts(kinematics, model.self_contact)
+                                                 : std::vector<ArcContact>{}) {}
+  Configuration(const RodModel& model, const VecX& q) : Configuration(model, Kinematics(model, q)) {}
+  Kinematics kinematics;
+  std::vector<ArcContact> contacts;
+};
+
+VecX residual_of(const RodModel& model, const Configuration& at, double load_factor) {
+  const VecX& q = at.kinematics.q();
   VecX r = generalised_stiffness(model).cwiseProduct(q - natural_strain_vector(model)) -
-           external_generalised_force(model, kinematics, load_factor);
+           external_generalised_force(model, at.kinematics, load_factor);
   // Self-contact is a constraint, not a load: never scaled by the load factor.
-  if (model.self_contact.radius > 0.0)
-    r -= self_contact_generalized_force(kinematics, self_contacts(kinematics, model.self_contact));
+  if (model.self_contact.radius > 0.0) r -= self_contact_generalized_force(at.kinematics, at.contacts);
   return r;
 }
 
-MatX static_jacobian(const RodModel& model, const VecX& q, double load_factor) {
-  const Kinematics kinematics(model, q);
-  MatX J = load_stiffness(model, kinematics, load_factor);  // in place: one n x n buffer, not two
+MatX jacobian_of(const RodModel& model, const Configuration& at, double load_factor) {
+  MatX J = load_stiffness(model, at.kinematics, load_factor);  // in place: one n x n buffer, not two
   J *= -1.0;
   J.diagonal() += generalised_stiffness(model);
-  if (model.self_contact.radius > 0.0)
-    J += self_contact_hessian(kinematics, model.self_contact, self_contacts(kinematics, model.self_contact));
+  if (model.self_contact.radius > 0.0) J += self_contact_hessian(at.kinematics, model.self_contact, at.contacts);
   return J;
+}
+
+// The potential of a model validated to have one (no dead end moment).
+double potential_of(const RodModel& model, const Configuration& at, double load_factor) {
+  const Kinematics& kinematics = at.kinematics;
+  double potential = elastic_energy(model, kinematics.q()) +
+                     load_factor * (gravity_energy(model, kinematics) - model.end_force.dot(kinematics.tip_position()));
+  if (model.self_contact.radius > 0.0) potential += self_contact_energy(model.self_contact, at.contacts);
+  return potential;
+}
+
+void require_potential(const RodModel& model) {
+  if (!model.end_moment.isZero(0.0))
+    throw InputError("end_moment", "invalid parameter 'end_moment': a dead end moment has no potential (Ziegler); "
+                                   "must be 0 for the static potential");
+}
+
+}  // namespace
+
+VecX static_residual(const RodModel& model, const VecX& q, double load_factor) {
+  return residual_of(model, Configuration(model, q), load_factor);
+}
+
+MatX static_jacobian(const RodModel& model, const VecX& q, double load_factor) {
+  return jacobian_of(model, Configuration(model, q), load_factor);
 }
 
 double static_potential(const RodModel& model, const VecX& q, double load_factor) {
   validate(model);
-  if (!model.end_moment.isZero(0.0))
-    throw InputError("end_moment", "invalid parameter 'end_moment': a dead end moment has no potential (Ziegler); "
-                                   "must be 0 for the static potential");
-  const Kinematics kinematics(model, q);
-  double potential = elastic_energy(model, q) +
-                     load_factor * (gravity_energy(model, kinematics) - model.end_force.dot(kinematics.tip_position()));
-  if (model.self_contact.radius > 0.0)
-    potential += self_contact_energy(model.self_contact, self_contacts(kinematics, model.self_contact));
-  return potential;
+  require_potential(model);
+  return potential_of(model, Configuration(model, q), load_factor);
 }
 
 namespace {
@@ -63,30 +95,21 @@ double largest_point_motion(const Kinematics& from, const Kinematics& to) {
 // Statics with self-contact: the equilibrium minimises the potential, so Newton is globalised on it
 // (see the header).
 StaticResult minimise_potential(const RodModel& model, const StaticOptions& options, const NewtonScales& scales) {
-  require_at_least("load_steps", options.load_steps, 1);
-  require_at_least("max_iterations", options.max_iterations, 1);
-  require_open_interval("tolerance", options.tolerance, 0.0, 1.0);
+  require_potential(model);
   const VecX k = generalised_stiffness(model);
   StaticResult result;
-  result.q = options.initial_q.size() == 0 ? natural_strain_vector(model) : options.initial_q;
-  if (result.q.size() != k.size())
-    throw InputError("initial_q", "invalid parameter 'initial_q': must be empty or hold " + std::to_string(k.size()) +
-                                      " values (one per degree of freedom)");
-  if (!result.q.allFinite()) throw InputError("initial_q", "invalid parameter 'initial_q': must be finite");
-  (void)static_potential(model, result.q);  // refuses a dead end moment before any work
-  constexpr double kEps = std::numeric_limits<double>::epsilon();
+  result.q = newton_start(options, natural_strain_vector(model));
   const double max_motion = 1.5 * model.self_contact.radius;  // per step: no strand passes through another (header)
   const char* method = "superhelix potential Newton";
   for (std::size_t step = 1; step <= options.load_steps; ++step) {
     const double lambda = static_cast<double>(step) / static_cast<double>(options.load_steps);
-    VecX residual = static_residual(model, result.q, lambda);
-    double potential = static_potential(model, result.q, lambda);
+    Configuration here(model, result.q);
+    VecX residual = residual_of(model, here, lambda);
+    double potential = potential_of(model, here, lambda);
     double shift = 0.0;  // Levenberg shift mu, in units of K
     bool converged = false;
     for (std::size_t iteration = 0; iteration < options.max_iterations && !converged; ++iteration) {
-      const double scale =
-          std::max({scales.stiffness_max * result.q.lpNorm<Eigen::Infinity>(), scales.stiffness_max / scales.length,
-                    scales.load_scale});
+      const double scale = scales.residual_scale(result.q);
       const double norm = residual.lpNorm<Eigen::Infinity>();
       check_time_budget(method, result.iterations, norm);
       if (norm <= options.tolerance * scale) {
@@ -94,7 +117,7 @@ StaticResult minimise_potential(const RodModel& model, const StaticOptions& opti
         break;
       }
       ++result.iterations;
-      const MatX hessian = static_jacobian(model, result.q, lambda);
+      const MatX hessian = jacobian_of(model, here, lambda);
       // (H + mu K) d = -r with the smallest mu (0, then 1e-6, x 10) whose matrix is positive definite:
       // d is then a descent direction of the potential.
       VecX direction;
@@ -109,32 +132,30 @@ StaticResult minimise_potential(const RodModel& model, const StaticOptions& opti
         }
         if (mu > 1e12) throw SolverError(method, "no positive definite shift of the Hessian", result.iterations, norm);
       }
-      const Kinematics here(model, result.q);
       const double slope = residual.dot(direction);
       // A step that would move a point by more than the cap starts scaled down to it (not halved past it).
-      const double full_motion = largest_point_motion(here, Kinematics(model, result.q + direction));
+      const double full_motion = largest_point_motion(here.kinematics, Kinematics(model, result.q + direction));
       const bool capped = full_motion > max_motion;
       double alpha = capped ? 0.99 * max_motion / full_motion : 1.0;
-      bool accepted = false;
-      VecX trial_q, trial_residual;
+      std::optional<Configuration> there;
+      VecX trial_residual;
       for (int halving = 0; halving <= 40; ++halving, alpha *= 0.5) {
-        trial_q = result.q + alpha * direction;
-        const Kinematics there(model, trial_q);
-        if (largest_point_motion(here, there) > max_motion) continue;
-        const double trial_potential = static_potential(model, trial_q, lambda);
-        trial_residual = static_residual(model, trial_q, lambda);
+        Kinematics moved(model, result.q + alpha * direction);
+        if (largest_point_motion(here.kinematics, moved) > max_motion) continue;
+        Configuration trial(model, std::move(moved));
+        const double trial_potential = potential_of(model, trial, lambda);
+        trial_residual = residual_of(model, trial, lambda);
         // Armijo on the potential; near the solution its decrease drowns in rounding, so a step that
         // halves the residual is taken too.
         if (trial_potential <= potential + 1e-4 * alpha * slope ||
             trial_residual.lpNorm<Eigen::Infinity>() <= 0.5 * norm) {
           potential = trial_potential;
-          accepted = true;
+          there.emplace(std::move(trial));
           break;
         }
       }
-      const bool round_off_step = direction.lpNorm<Eigen::Infinity>() * scales.length <=
-                                  64.0 * kEps * (1.0 + result.q.lpNorm<Eigen::Infinity>() * scales.length);
-      if (!accepted) {
+      const bool round_off_step = scales.round_off_step(direction, result.q);
+      if (!there) {
         if (round_off_step || norm <= 1e3 * options.tolerance * scale) {
           converged = true;  // already at the round-off floor of the residual
           break;
@@ -142,15 +163,14 @@ StaticResult minimise_potential(const RodModel& model, const StaticOptions& opti
         throw SolverError(method, "line search failed at load factor " + format_value(lambda), result.iterations,
                           norm);
       }
-      result.q = trial_q;
+      result.q = there->kinematics.q();
       residual = trial_residual;
+      here = std::move(*there);
       if (alpha == 1.0) shift = shift > 1e-6 ? 0.1 * shift : 0.0;  // a full step: trust the Hessian more
       if (round_off_step) converged = true;
     }
     result.residual = residual.lpNorm<Eigen::Infinity>();
-    const double scale = std::max({scales.stiffness_max * result.q.lpNorm<Eigen::Infinity>(),
-                                   scales.stiffness_max / scales.length, scales.load_scale});
-    if (!converged && result.residual > options.tolerance * scale)
+    if (!converged && result.residual > options.tolerance * scales.residual_scale(result.q))
       throw SolverError(method, "no convergence at load factor " + format_value(lambda), result.iterations,
                         result.residual);
   }

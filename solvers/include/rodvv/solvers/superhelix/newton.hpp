@@ -41,7 +41,16 @@ struct NewtonScales {
   double stiffness_max = 1.0;  // |K|_inf
   double length = 1.0;         // L
   double load_scale = 0.0;     // |F_ext(q0)|_inf at full load
+
+  // max(k_max |q|_inf, k_max / L, load_scale): what the residual at q is small against.
+  double residual_scale(const VecX& q) const;
+  // |dq|_inf L <= 64 eps (1 + |q|_inf L): a Newton step at round-off.
+  bool round_off_step(const VecX& direction, const VecX& q) const;
 };
+
+// Validates the options (InputError names load_steps / max_iterations / tolerance / initial_q) and
+// returns the start: initial_q, or q0 when it is empty. Shared by every static Newton iteration.
+VecX newton_start(const StaticOptions& options, const VecX& q0);
 
 MatX central_difference_jacobian(const StaticResidual& residual, const VecX& q, double load_factor,
                                  double length);
