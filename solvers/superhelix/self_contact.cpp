@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -75,6 +76,17 @@ bool is_local_minimum_of_curve(const ArcFoot& foot, double ell, std::size_t elem
   return (foot.t <= 0.0 && element == 0) || (foot.t >= ell && element + 1 == elements);
 }
 
+// The foot of `point` on the arc of `element` from the start t0 when it is in contact (closer than 2h)
+// and a local minimum of the distance to the whole curve; nothing otherwise.
+std::optional<ArcFoot> foot_in_contact(const Kinematics& kinematics, const SelfContact& contact, const Vec3& point,
+                                       std::size_t element, double t0) {
+  const ArcFoot foot = foot_on_arc(kinematics, point, element, t0);
+  if (foot.distance < 2.0 * contact.radius &&
+      is_local_minimum_of_curve(foot, kinematics.element_length(), element, kinematics.elements()))
+    return foot;
+  return std::nullopt;
+}
+
 // The contacts of the Gauss points of `point_element` with the arc of `foot_element`.
 void add_contacts(const Kinematics& kinematics, const SelfContact& contact, const ChordPolyline& polyline,
                   const std::vector<double>& weights, std::size_t point_element, std::size_t foot_element,
@@ -91,11 +103,10 @@ void add_contacts(const Kinematics& kinematics, const SelfContact& contact, cons
       if ((polyline.vertices[foot_element * c + j] - point.position).squaredNorm() <
           (polyline.vertices[foot_element * c + nearest] - point.position).squaredNorm())
         nearest = j;
-    const ArcFoot foot = foot_on_arc(kinematics, point.position, foot_element,
-                                     ell * static_cast<double>(nearest) / static_cast<double>(c));
-    if (!(foot.distance < 2.0 * contact.radius) ||
-        !is_local_minimum_of_curve(foot, ell, foot_element, kinematics.elements()))
-      continue;
+    const std::optional<ArcFoot> found = foot_in_contact(kinematics, contact, point.position, foot_element,
+                                                         ell * static_cast<double>(nearest) / static_cast<double>(c));
+    if (!found) continue;
+    const ArcFoot& foot = *found;
     if (!(foot.distance > 0.0))
       throw SolverError("superhelix self-contact",
                         "a Gauss point of element " + std::to_string(point_element) + " lies on the centreline of element " +
@@ -255,9 +266,8 @@ double contact_field(const Kinematics& kinematics, const SelfContact& contact, s
         start = t;
       }
     }
-    const ArcFoot foot = foot_on_arc(kinematics, point, Q, start);
-    if (foot.distance < 2.0 * contact.radius && is_local_minimum_of_curve(foot, ell, Q, n))
-      field += 0.5 * law.energy(foot.distance);
+    if (const auto foot = foot_in_contact(kinematics, contact, point, Q, start))
+      field += 0.5 * law.energy(foot->distance);
   }
   return field;
 }
