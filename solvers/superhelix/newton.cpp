@@ -60,6 +60,12 @@ bool NewtonScales::round_off_step(const VecX& direction, const VecX& q) const {
   return direction.lpNorm<Eigen::Infinity>() * length <= 64.0 * kEps * (1.0 + q.lpNorm<Eigen::Infinity>() * length);
 }
 
+void require_residual_floor(bool round_off_step, double norm, double tolerance, double scale, double load_factor,
+                            const std::string& method, std::size_t iterations) {
+  if (round_off_step || norm <= 1e3 * tolerance * scale) return;
+  throw SolverError(method, "line search failed at load factor " + format_value(load_factor), iterations, norm);
+}
+
 VecX newton_start(const StaticOptions& options, const VecX& q0) {
   require_at_least("load_steps", options.load_steps, 1);
   require_at_least("max_iterations", options.max_iterations, 1);
@@ -110,12 +116,9 @@ StaticResult newton_load_stepping(const StaticResidual& static_residual, const V
       }
       const bool round_off_step = scales.round_off_step(direction, result.q);
       if (!accepted) {
-        if (round_off_step || norm <= 1e3 * options.tolerance * scale) {
-          converged = true;  // already at the round-off floor of the residual
-          break;
-        }
-        throw SolverError(method, "line search failed at load factor " + format_value(lambda), result.iterations,
-                          norm);
+        require_residual_floor(round_off_step, norm, options.tolerance, scale, lambda, method, result.iterations);
+        converged = true;
+        break;
       }
       result.q = trial_q;
       residual = trial_residual;

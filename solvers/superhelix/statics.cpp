@@ -156,12 +156,9 @@ StaticResult minimise_potential(const RodModel& model, const StaticOptions& opti
       }
       const bool round_off_step = scales.round_off_step(direction, result.q);
       if (!there) {
-        if (round_off_step || norm <= 1e3 * options.tolerance * scale) {
-          converged = true;  // already at the round-off floor of the residual
-          break;
-        }
-        throw SolverError(method, "line search failed at load factor " + format_value(lambda), result.iterations,
-                          norm);
+        require_residual_floor(round_off_step, norm, options.tolerance, scale, lambda, method, result.iterations);
+        converged = true;
+        break;
       }
       result.q = there->kinematics.q();
       residual = trial_residual;

@@ -48,6 +48,12 @@ struct NewtonScales {
   bool round_off_step(const VecX& direction, const VecX& q) const;
 };
 
+// A line search that found no acceptable step: the iteration has converged when its step or its
+// residual is already at round-off (|r|_inf <= 1e3 tolerance scale); otherwise SolverError(method,
+// "line search failed at load factor ...", iterations, |r|_inf).
+void require_residual_floor(bool round_off_step, double norm, double tolerance, double scale, double load_factor,
+                            const std::string& method, std::size_t iterations);
+
 // Validates the options (InputError names load_steps / max_iterations / tolerance / initial_q) and
 // returns the start: initial_q, or q0 when it is empty. Shared by every static Newton iteration.
 VecX newton_start(const StaticOptions& options, const VecX& q0);
