@@ -4,8 +4,14 @@
 
 #include <string>
 
-#include "rodvv/common/errors.hpp"
+#include <cmath>
+#include <limits>
+
+#include <Eigen/LU>  // determinant
+
 #include "case_test_support.hpp"
+#include "pendulum/one_step_map.hpp"
+#include "rodvv/common/errors.hpp"
 
 namespace {
 
@@ -33,8 +39,8 @@ INSTANTIATE_TEST_SUITE_P(AllPendulumCases, PendulumCase, ::testing::ValuesIn(rod
 
 TEST(PendulumCatalogue, HasEveryMotionAndMethod) {
   const auto names = rodvv::testing::case_names_of_family("pendulum");
-  // 5 motions x 6 methods + 5 fixed-step methods in the long-time energy group.
-  EXPECT_EQ(names.size(), 35u);
+  // 5 motions x 6 methods + 5 fixed-step methods in the long-time energy group and in the one-step maps.
+  EXPECT_EQ(names.size(), 40u);
   for (const auto& c : default_registry().cases()) {
     EXPECT_GE(c.info.resolution.default_levels.size(), c.fit_levels) << c.info.name;
     EXPECT_FALSE(c.info.citation.empty()) << c.info.name;
@@ -104,6 +110,93 @@ TEST(PendulumUnits, AdaptiveToleranceIsNotOmegaFree) {
   set_parameter(other, "omega", 0.37);
   const auto result = run_sweep(c, other, c.info.resolution.default_levels);
   EXPECT_FALSE(result.skipped_gates.empty());
+}
+
+}  // namespace
+
+namespace {
+
+using rodvv::harness::pendulum_cases::documented_map;
+using rodvv::harness::pendulum_cases::kAllStepMaps;
+using rodvv::harness::pendulum_cases::measured_step_map;
+using rodvv::harness::pendulum_cases::step_map;
+using rodvv::harness::pendulum_cases::step_map_name;
+using rodvv::harness::pendulum_cases::StepMap;
+namespace pend = rodvv::solvers::pendulum;
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+double distance(const Eigen::Matrix2d& a, const Eigen::Matrix2d& b) { return (a - b).cwiseAbs().maxCoeff(); }
+
+int global_order(StepMap map) {
+  switch (map) {
+    case StepMap::ExplicitEuler:
+    case StepMap::SymplecticEulerKickDrift:
+    case StepMap::SymplecticEulerDriftKick: return 1;
+    case StepMap::VerletKickDriftKick:
+    case StepMap::VerletDriftKickDrift: return 2;
+    case StepMap::RungeKutta4:
+    case StepMap::McLachlanSb3a: return 4;
+    case StepMap::ExactFlow: break;
+  }
+  return 0;
+}
+
+// The oracle checked on its own, against the exact flow: each map errs by O(x^(p+1)) per step, with p
+// its method's order (a typo in a coefficient, e.g. McLachlan's, drops the order).
+TEST(OneStepMapOracle, EveryMapHasItsMethodsLocalOrder) {
+  for (StepMap map : kAllStepMaps) {
+    if (map == StepMap::ExactFlow) continue;
+    const double x = 0.05;
+    const double coarse = distance(step_map(map, x), step_map(StepMap::ExactFlow, x));
+    const double fine = distance(step_map(map, x / 2), step_map(StepMap::ExactFlow, x / 2));
+    EXPECT_NEAR(std::log2(coarse / fine), global_order(map) + 1, 0.05) << step_map_name(map);
+  }
+}
+
+// Symplectic maps of a linear Hamiltonian flow are area-preserving (det M = 1, HLW 2006 §VI.2); explicit
+// Euler and RK4 are not (det = 1 + x^2 and 1 - x^6/72 + x^8/576).
+TEST(OneStepMapOracle, SymplecticMapsPreserveArea) {
+  const double x = 0.3;
+  for (StepMap map : {StepMap::SymplecticEulerKickDrift, StepMap::SymplecticEulerDriftKick,
+                      StepMap::VerletKickDriftKick, StepMap::VerletDriftKickDrift, StepMap::McLachlanSb3a,
+                      StepMap::ExactFlow})
+    EXPECT_NEAR(step_map(map, x).determinant(), 1.0, 8 * kEps) << step_map_name(map);
+  EXPECT_NEAR(step_map(StepMap::ExplicitEuler, x).determinant(), 1.0 + x * x, 8 * kEps);
+  EXPECT_NEAR(step_map(StepMap::RungeKutta4, x).determinant(), 1.0 - std::pow(x, 6) / 72 + std::pow(x, 8) / 576,
+              8 * kEps);
+}
+
+// Two methods of the same order are told apart: at the finest default level x = 0.05 every pair of the
+// oracle's maps is more than 1e4 times the case's 32-eps gate apart.
+TEST(OneStepMapOracle, MapsAreDistinctFarAboveTheGate) {
+  for (StepMap a : kAllStepMaps)
+    for (StepMap b : kAllStepMaps)
+      if (a != b)
+        EXPECT_GT(distance(step_map(a, 0.05), step_map(b, 0.05)) / kEps, 32e4)
+            << step_map_name(a) << " vs " << step_map_name(b);
+}
+
+// The production integrators are the variants their documentation names, and not the other variant of
+// the same order: the kick-drift symplectic Euler is 1e10 times the gate from the drift-kick one.
+TEST(OneStepMap, ProductionMethodsAreTheirDocumentedVariants) {
+  const double omega = 2.7, x = 0.1;
+  const auto error = [&](pend::Method method, StepMap map) {
+    return distance(measured_step_map(method, omega, x / omega), step_map(map, x)) / kEps;
+  };
+  EXPECT_LE(error(pend::Method::SymplecticEuler, StepMap::SymplecticEulerKickDrift), 32.0);
+  EXPECT_GT(error(pend::Method::SymplecticEuler, StepMap::SymplecticEulerDriftKick), 1e11);
+  EXPECT_LE(error(pend::Method::StormerVerlet, StepMap::VerletKickDriftKick), 32.0);
+  EXPECT_GT(error(pend::Method::StormerVerlet, StepMap::VerletDriftKickDrift), 1e10);
+  EXPECT_GT(error(pend::Method::McLachlanRkn4, StepMap::RungeKutta4), 1e6);
+}
+
+TEST(OneStepMap, AdaptiveMethodHasNoOneStepMap) {
+  try {
+    (void)documented_map(pend::Method::DormandPrince5);
+    FAIL() << "dopri5 has no fixed one-step map";
+  } catch (const rodvv::InputError& error) {
+    EXPECT_EQ(error.parameter(), "method");
+  }
 }
 
 }  // namespace

@@ -33,6 +33,7 @@
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
+#include "pendulum/one_step_map.hpp"
 #include "pendulum_levels.hpp"
 #include "rodvv/harness/registry.hpp"
 #include "rodvv/harness/trajectory_metrics.hpp"
@@ -479,6 +480,7 @@ void register_pendulum_cases(Registry& registry) {
       registry.add(accuracy_case(motion, method));
   for (const pend::MethodInfo& method : pend::all_methods())
     if (!method.adaptive) registry.add(energy_case(method));
+  pendulum_cases::add_one_step_map_cases(registry);
 }
 
 }  // namespace rodvv::harness
