@@ -38,7 +38,7 @@ TEST(KnotCases, TrefoilPassesAtDefaultLevels) {
   const auto result = run_at_default_levels(named("knot/trefoil-nodal"));
   EXPECT_TRUE(result.passed()) << failing_gates(result);
   EXPECT_FALSE(result.gates.empty());
-  EXPECT_EQ(rodvv::testing::case_names_of_family("knot").size(), 3u);
+  EXPECT_EQ(rodvv::testing::case_names_of_family("knot").size(), 4u);
   // The report's contact-force profile beside H(s): zero on the tails, positive in the braid.
   const auto& series = result.levels.back().series;
   const auto profile = std::find_if(series.begin(), series.end(), [](const Series& s) { return s.name == "contact force p(s)"; });
@@ -86,6 +86,25 @@ TEST(KnotCases, WrongOrderOrTripledErrorIsRed) {
     return out;
   };
   EXPECT_FALSE(run_at_default_levels(tripled).passed());
+}
+
+// The loose-knot limit: 1/2 B kappa_B^2 / T -> 1 as eps^2. A relation off by 1 % (a tension or a stiffness
+// misread by 1 %) adds 0.01 to every level's excess: the order falls to about 1.4, out of its window.
+TEST(KnotCases, LoosenessStudyPassesAndARelationOffByOnePercentIsRed) {
+  const auto result = run_at_default_levels(named("knot/trefoil-looseness-superhelix"));
+  EXPECT_TRUE(result.passed()) << failing_gates(result);
+  Case off = named("knot/trefoil-looseness-superhelix");
+  const LevelRunner original = off.run_level;
+  off.run_level = [original](const Parameters& p, double level) {
+    LevelOutput out = original(p, level);
+    const double ratio = 1.01 * out.metrics.at("perpendicular_ratio").computed;
+    out.metrics["perpendicular_excess"] = {ratio - 1.0, 0.0, ratio - 1.0, 1.0};
+    return out;
+  };
+  const auto wrong = run_at_default_levels(off);
+  EXPECT_FALSE(wrong.passed());
+  ASSERT_TRUE(wrong.gates.front().measured.has_value());
+  EXPECT_LT(*wrong.gates.front().measured, 1.6);
 }
 
 // The rod of the case's construction at N = 100 (lambda = sqrt(B/T) = 0.5, h = 0.05).

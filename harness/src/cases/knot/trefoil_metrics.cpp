@@ -68,11 +68,12 @@ std::vector<MetricSpec> trefoil_metric_specs() {
   return metrics;
 }
 
-Parameters trefoil_parameters(Parameter looseness, Parameter barrier) {
-  return {make_parameter("B", 1.3, 0.0, 1e12, true, false, "force length^2", "bending stiffness EI1 = EI2"),
-          make_parameter("C", 0.9, 0.0, 1e12, true, false, "force length^2", "twisting stiffness GJ"),
-          make_parameter("T", 5.2, 0.0, 1e12, true, false, "force", "dead pull at the tip"), std::move(looseness),
-          std::move(barrier)};
+Parameters trefoil_parameters(std::vector<Parameter> own) {
+  Parameters parameters{make_parameter("B", 1.3, 0.0, 1e12, true, false, "force length^2", "bending stiffness EI1 = EI2"),
+                        make_parameter("C", 0.9, 0.0, 1e12, true, false, "force length^2", "twisting stiffness GJ"),
+                        make_parameter("T", 5.2, 0.0, 1e12, true, false, "force", "dead pull at the tip")};
+  for (auto& parameter : own) parameters.push_back(std::move(parameter));
+  return parameters;
 }
 
 }  // namespace rodvv::harness::knot_cases

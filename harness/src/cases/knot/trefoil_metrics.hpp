@@ -42,7 +42,7 @@ void add_trefoil_metrics(LevelOutput& output, const SpatialRodSolution& solution
 std::vector<MetricSpec> trefoil_metric_specs();
 
 // B = 1.3 (EI1 = EI2), C = 0.9 (GJ), T = 5.2 (the dead pull), each in (0, 1e12], then the case's own
-// looseness and barrier.
-Parameters trefoil_parameters(Parameter looseness, Parameter barrier);
+// (looseness, barrier).
+Parameters trefoil_parameters(std::vector<Parameter> own);
 
 }  // namespace rodvv::harness::knot_cases

@@ -124,8 +124,8 @@ void add_trefoil_nodal(Registry& registry) {
       // the coarsest level (50 edges) comes undone (no self-contact at equilibrium: the thinner strands
       // passed through each other), at 0.06 with barrier 5000 the H deviation's order is 1.53.
       trefoil_parameters(
-          make_parameter("looseness", 0.1, 0.07, 0.15, false, false, "", "h sqrt(T/B), the rod's radius in knot units"),
-          make_parameter("barrier", 500.0, 50.0, 5000.0, false, false, "", "barrier stiffness k h^2 / T")),
+          {make_parameter("looseness", 0.1, 0.07, 0.15, false, false, "", "h sqrt(T/B), the rod's radius in knot units"),
+           make_parameter("barrier", 500.0, 50.0, 5000.0, false, false, "", "barrier stiffness k h^2 / T")}),
       element_levels("number of edges", {50, 100, 200}, {50, 100, 200, 400}), std::move(metrics), std::move(gates),
       run);
   // The knot is posed in units of sqrt(B/T) (B = 1e12 with C scaled alike, T = 1e-3 .. 1e12 pass), so what
