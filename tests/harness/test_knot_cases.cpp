@@ -38,7 +38,7 @@ TEST(KnotCases, TrefoilPassesAtDefaultLevels) {
   const auto result = run_at_default_levels(named("knot/trefoil-nodal"));
   EXPECT_TRUE(result.passed()) << failing_gates(result);
   EXPECT_FALSE(result.gates.empty());
-  EXPECT_EQ(rodvv::testing::case_names_of_family("knot").size(), 4u);
+  EXPECT_EQ(rodvv::testing::case_names_of_family("knot").size(), 6u);
   // The report's contact-force profile beside H(s): zero on the tails, positive in the braid.
   const auto& series = result.levels.back().series;
   const auto profile = std::find_if(series.begin(), series.end(), [](const Series& s) { return s.name == "contact force p(s)"; });
@@ -105,6 +105,19 @@ TEST(KnotCases, LoosenessStudyPassesAndARelationOffByOnePercentIsRed) {
   EXPECT_FALSE(wrong.passed());
   ASSERT_TRUE(wrong.gates.front().measured.has_value());
   EXPECT_LT(*wrong.gates.front().measured, 1.6);
+}
+
+// As the barrier stiffens the overlap vanishes at the order the contact's geometry sets (1/2 for the nodal
+// rod's point forces, 2/5 .. 1/2 for the Super-Helix's line force); an overlap that fell as the compliance
+// itself (order 1: a linear penalty's) is red on either rod.
+TEST(KnotCases, BarrierLimitPassesAndALinearPenaltysOrderIsRed) {
+  for (const char* name : {"knot/trefoil-barrier-limit-nodal", "knot/trefoil-barrier-limit-superhelix"}) {
+    const auto result = run_at_default_levels(named(name));
+    EXPECT_TRUE(result.passed()) << name << failing_gates(result);
+    Case linear = named(name);
+    linear.gates = {order_gate("overlap", 1.0, "a linear penalty's overlap ~ F / k")};
+    EXPECT_FALSE(run_at_default_levels(linear).passed()) << name;
+  }
 }
 
 // The rod of the case's construction at N = 100 (lambda = sqrt(B/T) = 0.5, h = 0.05).

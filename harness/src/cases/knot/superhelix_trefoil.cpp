@@ -18,8 +18,8 @@ namespace rodvv::harness::knot_cases {
 namespace sh = solvers::superhelix;
 using namespace cases;
 
-LevelOutput relax_superhelix_trefoil(const SuperHelixTrefoil& k, std::size_t n) {
-  const double lambda = std::sqrt(k.B / k.T), h = k.looseness * lambda;
+LevelOutput relax_superhelix_trefoil(const TrefoilKnot& k, std::size_t n) {
+  const double lambda = k.lambda(), h = k.radius();
   const BraidClosure braid{3, 1.25 * h, 10.0 * h, 0.6 * lambda, 3.0 * h, 2.0 * lambda};
   validate(braid);
   const LaidSuperHelix laid = superhelix_on_curve(braid_closure_curve(braid), n, Vec3::UnitZ());

@@ -14,6 +14,7 @@
 
 #include "rodvv/harness/case.hpp"
 #include "rodvv/harness/parameters.hpp"
+#include "trefoil_metrics.hpp"
 
 namespace rodvv::harness::knot_cases {
 
@@ -22,15 +23,9 @@ inline constexpr const char* kSuperHelixContactMethod =
     "Gauss points and their feet on the helical arcs (chord sort-and-sweep broad phase); statics by Newton on the "
     "potential with its exact Hessian, Levenberg shift and at most 1.5 h of motion per step";
 
-struct SuperHelixTrefoil {
-  double B = 0.0, C = 0.0, T = 0.0;  // bending (EI1 = EI2), twisting GJ, the dead pull
-  double looseness = 0.0;            // h sqrt(T/B)
-  double barrier = 0.0;              // k h^3 / T, the line barrier's stiffness per unit length
-};
-
-// Ties the knot in N elements, relaxes it, and measures it: the trefoil metrics (trefoil_metrics.hpp), the
+// Ties the knot (its barrier k h^3 / T, the line barrier's stiffness per unit length) in N elements, relaxes it, and measures it: the trefoil metrics (trefoil_metrics.hpp), the
 // contact-force series and the diagnostics below. SolverError when the knot comes undone.
-LevelOutput relax_superhelix_trefoil(const SuperHelixTrefoil& knot, std::size_t elements);
+LevelOutput relax_superhelix_trefoil(const TrefoilKnot& knot, std::size_t elements);
 // barrier = k h^3 / T in [50, 5000] (default 500), measured at both ends with the default levels of both cases.
 Parameter superhelix_barrier_parameter();
 // contact_points, deepest_overlap, laying_miss, iterations, equilibrium_residual.

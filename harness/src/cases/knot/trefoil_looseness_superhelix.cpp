@@ -47,9 +47,7 @@ using namespace cases;
 std::size_t elements_at(double looseness) { return std::max<std::size_t>(150, std::size_t(std::ceil(9.0 / looseness))); }
 
 LevelOutput run(const Parameters& p, double looseness) {
-  LevelOutput output = relax_superhelix_trefoil(
-      {parameter_value(p, "B"), parameter_value(p, "C"), parameter_value(p, "T"), looseness, parameter_value(p, "barrier")},
-      elements_at(looseness));
+  LevelOutput output = relax_superhelix_trefoil(trefoil_knot(p, looseness), elements_at(looseness));
   output.metrics["perpendicular_excess"] = value_sample(output.metrics.at("perpendicular_ratio").computed - 1.0, 1.0);
   output.metrics["elements"] = diagnostic(double(elements_at(looseness)));
   return output;

@@ -11,6 +11,14 @@
 
 namespace rodvv::harness::knot_cases {
 
+double TrefoilKnot::lambda() const { return std::sqrt(B / T); }
+double TrefoilKnot::radius() const { return looseness * lambda(); }
+
+TrefoilKnot trefoil_knot(const Parameters& p, std::optional<double> looseness, std::optional<double> barrier) {
+  return {parameter_value(p, "B"), parameter_value(p, "C"), parameter_value(p, "T"),
+          looseness ? *looseness : parameter_value(p, "looseness"), barrier ? *barrier : parameter_value(p, "barrier")};
+}
+
 LoopRelations loop_relations(const SpatialRodSolution& solution, double B, double T, const std::string& method,
                              std::size_t iterations, double residual) {
   std::vector<double> tx, kappa;

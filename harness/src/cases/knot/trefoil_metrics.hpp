@@ -4,6 +4,7 @@
 // relations of the loop (PHYSICS.md §5.1, the tension elastica homoclinic). The rod-specific metrics
 // (contacts, iterations) and parameters (looseness, barrier windows) are each case's own.
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,18 @@
 #include "rodvv/harness/parameters.hpp"
 
 namespace rodvv::harness::knot_cases {
+
+// The knot both rods tie: bending B (EI1 = EI2), twisting C (GJ), the dead pull T, the looseness
+// h sqrt(T/B) and the barrier's stiffness in the rod's own units (each rod's barrier parameter says which).
+struct TrefoilKnot {
+  double B = 0.0, C = 0.0, T = 0.0, looseness = 0.0, barrier = 0.0;
+  double lambda() const;  // sqrt(B/T), the loop's scale
+  double radius() const;  // h = looseness lambda
+};
+// From the parameters B, C, T, looseness and barrier; looseness and barrier may be given instead (a sweep
+// over one of them, whose level is not a parameter).
+TrefoilKnot trefoil_knot(const Parameters& p, std::optional<double> looseness = std::nullopt,
+                         std::optional<double> barrier = std::nullopt);
 
 struct LoopRelations {
   double perpendicular_ratio = 0.0;  // mean 1/2 B kappa^2 / T where t.e_x changes sign (loose limit 1)

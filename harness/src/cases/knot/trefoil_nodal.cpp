@@ -6,13 +6,7 @@
 // through the braid where the rod touches itself, when the field of the barrier felt at s, V_eff, is
 // part of H (solvers/rod3d/solution.cpp). The case measures max_s |H(s) - T| / T over the stations.
 //
-// Tying (trefoil_tying.hpp): the closure of the braid sigma_1^3 with its lower arc cut and drawn out
-// into tails, in units of the knot's own scale lambda = sqrt(B/T) (the loose-knot loop: apex radius
-// lambda/2, PHYSICS.md §5.1) and of the radius h: strands 1.25 h off the braid axis over |x| <= 10 h,
-// closing arcs of radius 0.6 lambda, tails 6 lambda long passing 3 h apart. Relaxed to equilibrium at
-// the full load by the statics with pseudo-transient continuation (statics.hpp): the knot slides and
-// turns about the pull axis (an exact zero mode of an isotropic rod), which a plain Newton iteration
-// cannot follow.
+// Tying and relaxation: nodal_trefoil.hpp.
 //
 // Scales: the discrete problem is the same in lambda units for every B and T, and depends on the
 // looseness epsilon = h sqrt(T/B) (default 0.1; the loop is then about 40 radii long), C/B and the
@@ -23,90 +17,27 @@
 // different equilibria when the path differs in its last bits): first order, as PHYSICS.md §5.1 expects of contact forces lumped at vertices;
 // the barrier's own error (V_eff, ~ f^2/k) is below it (k ten times larger or smaller changes the
 // error by < 10 %).
-#include <cmath>
 #include <string>
 
 #include "../case_builder.hpp"
-#include "contact_profile.hpp"
 #include "knot_cases.hpp"
-#include "rodvv/common/errors.hpp"
-#include "rodvv/solvers/rod3d/self_contact.hpp"
-#include "rodvv/solvers/rod3d/solution.hpp"
-#include "rodvv/solvers/rod3d/state.hpp"
-#include "rodvv/solvers/rod3d/statics.hpp"
+#include "nodal_trefoil.hpp"
 #include "trefoil_metrics.hpp"
-#include "trefoil_tying.hpp"
 
 namespace rodvv::harness::knot_cases {
 
 namespace {
 
-namespace rod = solvers::rod3d;
 using namespace cases;
 
-const char* const kMethod = kContactStaticsMethod;
-
-struct Knot {
-  double B, C, T, looseness, barrier;
-  double lambda() const { return std::sqrt(B / T); }
-  double radius() const { return looseness * lambda(); }
-};
-
-Knot knot_of(const Parameters& p) {
-  return {parameter_value(p, "B"), parameter_value(p, "C"), parameter_value(p, "T"), parameter_value(p, "looseness"),
-          parameter_value(p, "barrier")};
-}
-
-BraidClosure trefoil_of(const Knot& k) {
-  const double h = k.radius(), lambda = k.lambda();
-  return {3, 1.25 * h, 10.0 * h, 0.6 * lambda, 3.0 * h, 6.0 * lambda};
-}
-
-LevelOutput run(const Parameters& p, double level) {
-  const std::size_t n = element_count(level);
-  const Knot k = knot_of(p);
-  const TiedRod tied = tie_braid_closure(trefoil_of(k), n);
-
-  const double h = k.radius();
-  const PulledKnot pulled = pull_tied_rod(tied, k.B, k.C, k.T, {h, k.barrier * k.T / (h * h)});
-  const rod::RodModel& model = pulled.model;
-
-  rod::StaticOptions options;
-  options.pseudo_transient = true;
-  options.max_iterations = 200 * n;  // measured: 340 to 900 iterations at N = 50 .. 400
-  options.tolerance = 1e-9;
-  const auto result = rod::solve_static(model, pulled.start, options);
-
-  const auto solution = rod::make_solution(model, result.state);
-  const auto contacts = rod::self_contacts(model.self_contact, result.state.position, rod::rest_edge_length(model));
-  if (contacts.empty())
-    throw SolverError(kMethod, "the knot came undone: no self-contact at equilibrium", result.iterations,
-                      result.residual);
-  double deepest = 0.0;
-  for (const auto& c : contacts) deepest = std::max(deepest, 1.0 - c.distance / (2.0 * h));
-
-  // The ends' span along the pull (root: the support point, s = 0), for the end shortening.
-  const double span = (result.state.position[n] - model.root.position).x();
-
-  LevelOutput output;
-  add_trefoil_metrics(output, solution, k.B, k.T, span, {kMethod, result.iterations, result.residual});
-  output.metrics["contact_pairs"] = diagnostic(double(contacts.size()));
-  output.series.push_back(contact_force_series(model, contacts));
-  output.metrics["deepest_overlap"] = diagnostic(deepest);
-  output.metrics["iterations"] = diagnostic(double(result.iterations));
-  output.metrics["equilibrium_residual"] = diagnostic(result.residual);
-  return output;
-}
+LevelOutput run(const Parameters& p, double level) { return relax_nodal_trefoil(trefoil_knot(p), element_count(level)); }
 
 }  // namespace
 
 void add_trefoil_nodal(Registry& registry) {
   const double h = 1.0 / 200.0;
   std::vector<MetricSpec> metrics = trefoil_metric_specs();
-  metrics.push_back(diagnostic_metric("contact_pairs", "segment pairs closer than 2h at equilibrium"));
-  metrics.push_back(diagnostic_metric("deepest_overlap", "largest (2h - d) / 2h over the contacts"));
-  metrics.push_back(diagnostic_metric("iterations", "Newton iterations of the pseudo-transient relaxation"));
-  metrics.push_back(diagnostic_metric("equilibrium_residual", "final scaled residual"));
+  for (auto& spec : nodal_trefoil_diagnostic_specs()) metrics.push_back(std::move(spec));
   std::vector<GateSpec> gates{
       order_gate("H_deviation", 1.0,
                  "contact forces lumped at the vertices of the segments: O(h) at the contact set's ends (PHYSICS.md "
@@ -119,7 +50,7 @@ void add_trefoil_nodal(Registry& registry) {
        "Inextensible isotropic rod (B, C), root clamped, tip free under the dead load T e_x, tied as the closure of "
        "the braid sigma_1^3 and relaxed with frictionless self-contact (barrier) of radius h = looseness sqrt(B/T).",
        "H(s) = T at every s, through the braid (Noether, frictionless contact; PHYSICS.md §1.2, §5.1)",
-       "Audoly, Clauvelin & Neukirch 2007 (PRL 99:164301); PHYSICS.md §5.1", kMethod},
+       "Audoly, Clauvelin & Neukirch 2007 (PRL 99:164301); PHYSICS.md §5.1", kContactStaticsMethod},
       // From 0.07 (measured 2026-11-26 over barrier 50 .. 5000 and C/B 0.3 .. 100): at 0.05 the knot of
       // the coarsest level (50 edges) comes undone (no self-contact at equilibrium: the thinner strands
       // passed through each other), at 0.06 with barrier 5000 the H deviation's order is 1.53.

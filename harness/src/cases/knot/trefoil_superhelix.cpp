@@ -29,9 +29,7 @@ namespace {
 using namespace cases;
 
 LevelOutput run(const Parameters& p, double level) {
-  return relax_superhelix_trefoil({parameter_value(p, "B"), parameter_value(p, "C"), parameter_value(p, "T"),
-                                   parameter_value(p, "looseness"), parameter_value(p, "barrier")},
-                                  element_count(level));
+  return relax_superhelix_trefoil(trefoil_knot(p), element_count(level));
 }
 
 }  // namespace

@@ -1,0 +1,27 @@
+#pragma once
+// The open trefoil in the nodal 3-D rod, tied and relaxed (shared by knot/trefoil-nodal, the sweep over N,
+// and knot/trefoil-barrier-limit-nodal, the sweep over the barrier's stiffness).
+//
+// Tying (trefoil_tying.hpp): the closure of the braid sigma_1^3 with its lower arc cut and drawn out into
+// tails, in units of the knot's own scale lambda = sqrt(B/T) (the loose-knot loop: apex radius lambda/2,
+// PHYSICS.md §5.1) and of the radius h: strands 1.25 h off the braid axis over |x| <= 10 h, closing arcs
+// of radius 0.6 lambda, tails 6 lambda long passing 3 h apart. Relaxed to equilibrium at the full load by
+// the statics with pseudo-transient continuation (rod3d/statics.hpp): the knot slides and turns about the
+// pull axis (an exact zero mode of an isotropic rod), which a plain Newton iteration cannot follow. The
+// root is clamped, the tip free under the dead pull T e_x; the barrier is k = barrier T / h^2 per segment
+// pair (an overlap of about h / sqrt(barrier) at a contact force T).
+#include <cstddef>
+#include <vector>
+
+#include "rodvv/harness/case.hpp"
+#include "trefoil_metrics.hpp"
+
+namespace rodvv::harness::knot_cases {
+
+// Ties the knot in N edges, relaxes it, and measures it: the trefoil metrics (trefoil_metrics.hpp), the
+// contact-force series and the diagnostics below. SolverError when the knot comes undone.
+LevelOutput relax_nodal_trefoil(const TrefoilKnot& knot, std::size_t edges);
+// contact_pairs, deepest_overlap, iterations, equilibrium_residual.
+std::vector<MetricSpec> nodal_trefoil_diagnostic_specs();
+
+}  // namespace rodvv::harness::knot_cases
