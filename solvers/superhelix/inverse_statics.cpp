@@ -24,6 +24,9 @@ void validate_inverse(const RodModel& model) {
   if (model.self_contact.radius != 0.0)
     throw InputError("self_contact", "invalid parameter 'self_contact': inverse statics does not take the barrier "
                                      "self-contact (contact forces are unknowns of inverse_contact); its radius must be 0");
+  if (model.tip_guide.stiffness != 0.0)
+    throw InputError("tip_guide", "invalid parameter 'tip_guide': inverse statics is posed for a free tip under the "
+                                  "loads of loads.hpp; its stiffness must be 0");
 }
 
 VecX rest_strain(const RodModel& model, const VecX& q, const VecX& force) {

@@ -10,6 +10,22 @@
 
 namespace rodvv::solvers::superhelix {
 
+namespace {
+
+// A rotation: orthonormal columns and det = +1, to 1e-10 (a frame built from unit vectors in double
+// precision is orthonormal to ~1e-15; 1e-10 accepts frames typed with ~10 digits).
+void require_rotation(const std::string& name, const Mat3& frame) {
+  for (int i = 0; i < 3; ++i) require_finite_vector(name, frame.col(i));
+  const double orthogonality = (frame.transpose() * frame - Mat3::Identity()).norm();
+  const double det = frame.determinant();
+  if (!(orthogonality <= 1e-10) || !(std::abs(det - 1.0) <= 1e-10))
+    throw InputError(name, "invalid parameter '" + name + "': must be a rotation matrix (|R^T R - I| <= 1e-10 and "
+                               "|det R - 1| <= 1e-10), got |R^T R - I| = " + format_value(orthogonality) +
+                               ", det R = " + format_value(det));
+}
+
+}  // namespace
+
 void validate(const RodModel& model) {
   require_at_least("elements", model.elements, 1);
   require_positive("length", model.length);
@@ -35,18 +51,16 @@ void validate(const RodModel& model) {
   require_finite_vector("root_position", model.root_position);
   require_finite_vector("end_force", model.end_force);
   require_finite_vector("end_moment", model.end_moment);
-  for (int i = 0; i < 3; ++i) require_finite_vector("root_frame", model.root_frame.col(i));
-  // A rotation: orthonormal columns and det = +1, to 1e-10 (a frame built from unit vectors in
-  // double precision is orthonormal to ~1e-15; 1e-10 accepts frames typed with ~10 digits).
-  const double orthogonality = (model.root_frame.transpose() * model.root_frame - Mat3::Identity()).norm();
-  const double det = model.root_frame.determinant();
-  if (!(orthogonality <= 1e-10) || !(std::abs(det - 1.0) <= 1e-10))
-    throw InputError("root_frame", "invalid parameter 'root_frame': must be a rotation matrix "
-                                   "(|R^T R - I| <= 1e-10 and |det R - 1| <= 1e-10), got |R^T R - I| = " +
-                                       format_value(orthogonality) + ", det R = " + format_value(det));
+  require_rotation("root_frame", model.root_frame);
   if (model.self_contact.radius != 0.0 || model.self_contact.stiffness != 0.0) {
     require_positive("self_contact.radius", model.self_contact.radius);
     require_positive("self_contact.stiffness", model.self_contact.stiffness);
+  }
+  if (model.tip_guide.stiffness != 0.0 || model.tip_guide.rotational_stiffness != 0.0) {
+    require_positive("tip_guide.stiffness", model.tip_guide.stiffness);
+    require_positive("tip_guide.rotational_stiffness", model.tip_guide.rotational_stiffness);
+    require_finite_vector("tip_guide.point", model.tip_guide.point);
+    require_rotation("tip_guide.frame", model.tip_guide.frame);
   }
   if (model.gauss_points < 1 || model.gauss_points > 8)
     throw InputError("gauss_points", "invalid parameter 'gauss_points' = " +
@@ -67,6 +81,9 @@ void require_statics_only_loads_absent(const RodModel& model, const char* what) 
   if (model.self_contact.radius != 0.0)
     throw InputError("self_contact", std::string("invalid parameter 'self_contact': ") + what +
                                          " does not take self-contact (statics only); its radius must be 0");
+  if (model.tip_guide.stiffness != 0.0)
+    throw InputError("tip_guide", std::string("invalid parameter 'tip_guide': ") + what +
+                                      " does not take a sliding clamp at the tip (statics only); its stiffness must be 0");
 }
 
 Vec3 elliptic_section_inertia(double line_density, double a, double b) {

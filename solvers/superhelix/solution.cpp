@@ -5,6 +5,7 @@
 #include "rodvv/common/errors.hpp"
 #include "rodvv/solvers/superhelix/kinematics.hpp"
 #include "rodvv/solvers/superhelix/self_contact.hpp"
+#include "rodvv/solvers/superhelix/tip_guide.hpp"
 
 namespace rodvv::solvers::superhelix {
 
@@ -43,6 +44,11 @@ SpatialRodSolution make_solution(const RodModel& model, const VecX& q, std::stri
     for (const auto& f : contact_forces)  // a force at the station itself counts half
       solution.force_n.back() += (f.s > s ? 1.0 : f.s == s ? 0.5 : 0.0) * f.force;
     solution.potential.back() += contact_field(kinematics, model.self_contact, e, 0.5 * ell);
+  }
+  // A sliding clamp's reaction at the tip is carried by every section, as the end force is.
+  if (has_tip_guide(model)) {
+    const Vec3 reaction = tip_guide_reaction(model.tip_guide, kinematics).force;
+    for (auto& force : solution.force_n) force += reaction;
   }
   append_vertices(solution, kinematics, n, ell);
   return solution;

@@ -17,6 +17,7 @@
 #include "rodvv/solvers/superhelix/load_stiffness.hpp"
 #include "rodvv/solvers/superhelix/loads.hpp"
 #include "rodvv/solvers/superhelix/self_contact.hpp"
+#include "rodvv/solvers/superhelix/tip_guide.hpp"
 
 namespace rodvv::solvers::superhelix {
 
@@ -40,6 +41,8 @@ VecX residual_of(const RodModel& model, const Configuration& at, double load_fac
            external_generalised_force(model, at.kinematics, load_factor);
   // Self-contact is a constraint, not a load: never scaled by the load factor.
   if (model.self_contact.radius > 0.0) r -= self_contact_generalized_force(at.kinematics, at.contacts);
+  // The sliding clamp is a support, not a load: never scaled either.
+  if (has_tip_guide(model)) r += tip_guide_gradient(model.tip_guide, at.kinematics);
   return r;
 }
 
@@ -48,6 +51,7 @@ MatX jacobian_of(const RodModel& model, const Configuration& at, double load_fac
   J *= -1.0;
   J.diagonal() += generalised_stiffness(model);
   if (model.self_contact.radius > 0.0) J += self_contact_hessian(at.kinematics, model.self_contact, at.contacts);
+  if (has_tip_guide(model)) J += tip_guide_hessian(model.tip_guide, at.kinematics);
   return J;
 }
 
@@ -57,6 +61,7 @@ double potential_of(const RodModel& model, const Configuration& at, double load_
   double potential = elastic_energy(model, kinematics.q()) +
                      load_factor * (gravity_energy(model, kinematics) - model.end_force.dot(kinematics.tip_position()));
   if (model.self_contact.radius > 0.0) potential += self_contact_energy(model.self_contact, at.contacts);
+  if (has_tip_guide(model)) potential += tip_guide_energy(model.tip_guide, kinematics);
   return potential;
 }
 

@@ -38,7 +38,7 @@ TEST(KnotCases, TrefoilPassesAtDefaultLevels) {
   const auto result = run_at_default_levels(named("knot/trefoil-nodal"));
   EXPECT_TRUE(result.passed()) << failing_gates(result);
   EXPECT_FALSE(result.gates.empty());
-  EXPECT_EQ(rodvv::testing::case_names_of_family("knot").size(), 6u);
+  EXPECT_EQ(rodvv::testing::case_names_of_family("knot").size(), 7u);
   // The report's contact-force profile beside H(s): zero on the tails, positive in the braid.
   const auto& series = result.levels.back().series;
   const auto profile = std::find_if(series.begin(), series.end(), [](const Series& s) { return s.name == "contact force p(s)"; });

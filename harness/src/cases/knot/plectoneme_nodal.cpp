@@ -36,6 +36,7 @@
 #include "contact_profile.hpp"
 #include "knot_cases.hpp"
 #include "plectoneme_tying.hpp"
+#include "ply_metrics.hpp"
 #include "rodvv/common/errors.hpp"
 #include "rodvv/invariants/noether3d.hpp"
 #include "rodvv/references/knot_and_ply.hpp"
@@ -67,24 +68,10 @@ Ply ply_of(const Parameters& p) {
           parameter_value(p, "helix_angle") * kPi / 180.0, parameter_value(p, "barrier")};
 }
 
-// The plectoneme's laws (a left-handed ply: M_t > 0) at R and theta.
-ref::PlectonemeSolution law(double B, double R, double theta) { return ref::plectoneme({B, R, theta, 0.0, 0.0}); }
-
-// The theta in (0, pi/4) at which the law's M_t of a left-handed ply equals `moment` (bisection: it grows
-// from 0 to infinity on it; a moment <= 0, of the wrong hand, gives theta -> 0).
-double theta_of_moment(double B, double R, double moment) {
-  double lo = 1e-9, hi = 0.25 * kPi - 1e-12;
-  for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (-law(B, R, mid).ply.twisting_moment < moment ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
 LevelOutput run(const Parameters& p, double level) {
   const std::size_t n = element_count(level);
   const Ply k = ply_of(p);
-  const ref::PlectonemeSolution laid_law = law(k.B, k.h, k.theta0);
+  const ref::PlectonemeSolution laid_law = ply_law(k.B, k.h, k.theta0);
   // The twist that holds a left-handed ply: M_t / C > 0 (the law's M_t is a right-handed ply's).
   const double T_ext = laid_law.tail_tension, twist_rate = -laid_law.ply.twisting_moment / k.C;
   const PlyLayout layout{k.h, k.theta0, kPlyLength * k.h, 4.0 * k.h, 8.0 * k.h, 2.0 * k.h, kTailLength * k.h};
@@ -106,17 +93,13 @@ LevelOutput run(const Parameters& p, double level) {
                       result.residual);
 
   // The tails: the station at the middle of the root's tail.
-  std::size_t tail = 0;
-  const double tail_middle = 0.5 * kTailLength * k.h;
-  for (std::size_t i = 0; i < solution.s.size(); ++i)
-    if (std::abs(solution.s[i] - tail_middle) < std::abs(solution.s[tail] - tail_middle)) tail = i;
+  const std::size_t tail = station_nearest(solution, 0.5 * kTailLength * k.h);
   const Vec3 t_tail = solution.frame[tail].col(0);
-  const double tail_tension = solution.force_n[tail].dot(t_tail);
-  const double M_t = solution.moment_m[tail].dot(t_tail);
+  PlyMeasurement ply;
+  ply.tail_tension = solution.force_n[tail].dot(t_tail);
+  ply.twisting_moment = solution.moment_m[tail].dot(t_tail);
   const auto flattened = invariants::noether3d_flattened(solution);
-  const double H_tail = flattened[tail];
-  double deviation = 0.0;
-  for (double H : flattened) deviation = std::max(deviation, std::abs(H - H_tail) / T_ext);
+  for (double H : flattened) ply.H_deviation = std::max(ply.H_deviation, std::abs(H - flattened[tail]) / T_ext);
 
   // The middle of the ply: the root strand's segments first .. of the pairs, the outer quarters dropped.
   std::size_t lo = contacts.front().first, hi = contacts.front().first;
@@ -140,38 +123,23 @@ LevelOutput run(const Parameters& p, double level) {
   if (segments < 3)
     throw SolverError(kMethod, "no uniform ply: " + std::to_string(segments) + " strand segments in contact in its middle",
                       result.iterations, result.residual);
-  const double R = R_sum / double(segments), theta = theta_sum / double(segments);
-  if (!(theta < 0.25 * kPi))
-    throw SolverError(kMethod, "no uniform ply: the helix angle in its middle is " + std::to_string(theta * 180.0 / kPi) +
+  ply.R = R_sum / double(segments);
+  ply.theta = theta_sum / double(segments);
+  if (!(ply.theta < 0.25 * kPi))
+    throw SolverError(kMethod, "no uniform ply: the helix angle in its middle is " + std::to_string(ply.theta * 180.0 / kPi) +
                                    " deg, beyond the ply's 45", result.iterations, result.residual);
-  const double p_measured = force_sum / (double(to - from + 1) * ebar);
-  double strand_tension = 0.0;
+  ply.contact_force = force_sum / (double(to - from + 1) * ebar);
   std::size_t strand_stations = 0;
   for (std::size_t i = 0; i < solution.s.size(); ++i) {
     const double vertex = solution.s[i] / ebar + 0.5;  // the station's vertex index (clamped root)
     if (vertex < double(from) + 1.0 || vertex > double(to)) continue;
-    strand_tension += solution.force_n[i].dot(solution.frame[i].col(0));
+    ply.strand_tension += solution.force_n[i].dot(solution.frame[i].col(0));
     ++strand_stations;
   }
-  strand_tension /= double(std::max<std::size_t>(strand_stations, 1));
-  const ref::PlectonemeSolution at = law(k.B, R, theta);
-  // The law's M_t is that of a right-handed ply; this one is left-handed (plectoneme_tying.hpp): -M_t.
-  const double M_law = -at.ply.twisting_moment;
-  const double theta_moment = theta_of_moment(k.B, R, M_t);
-  const double T_from_moment = law(k.B, R, theta_moment).tail_tension;
+  ply.strand_tension /= double(std::max<std::size_t>(strand_stations, 1));
 
   LevelOutput output;
-  output.metrics["H_deviation"] = value_sample(deviation, 1.0);  // in units of the tension
-  output.metrics["tension_law"] = value_sample(T_ext / at.tail_tension - 1.0);
-  output.metrics["tension_from_moment"] = value_sample(T_ext / T_from_moment - 1.0);
-  output.metrics["moment_law"] = value_sample(M_t / M_law - 1.0);
-  output.metrics["contact_force_law"] = value_sample(p_measured / at.ply.contact_force - 1.0);
-  output.metrics["strand_tension_law"] = value_sample(strand_tension / at.ply.tension - 1.0);
-  output.metrics["helix_angle"] = diagnostic(theta * 180.0 / kPi);
-  output.metrics["helix_angle_from_moment"] = diagnostic(theta_moment * 180.0 / kPi);
-  output.metrics["ply_radius"] = diagnostic(R / k.h);
-  output.metrics["tail_tension"] = diagnostic(tail_tension);
-  output.metrics["twisting_moment"] = diagnostic(M_t);
+  add_ply_metrics(output, ply, k.B, k.h, T_ext);
   add_noether3d_metrics(output, solution, std::nullopt);
   output.metrics["contact_pairs"] = diagnostic(double(contacts.size()));
   output.series.push_back(contact_force_series(model, contacts));
@@ -183,19 +151,8 @@ LevelOutput run(const Parameters& p, double level) {
 // One plectoneme case: the ply laid at `angle` degrees, swept over `levels`, gated by `gates`.
 Case plectoneme_case(const std::string& name, double angle, std::vector<double> levels, std::vector<double> extended,
                      std::vector<GateSpec> gates) {
-  std::vector<MetricSpec> metrics{
-      invariant_metric("H_deviation", "max_s |H(s) - H_tail| / T_ext through the ply, V_eff of the barrier included", 1.5),
-      invariant_metric("tension_law", "T_ext / T_law(R, theta) - 1 at the measured R and theta"),
-      invariant_metric("tension_from_moment", "T_ext / T_law(R, theta(M_t)) - 1, theta from the measured M_t"),
-      invariant_metric("moment_law", "M_t / M_t,law(R, theta) - 1 (a left-handed ply: M_t > 0)"),
-      invariant_metric("contact_force_law", "p / p_law(R, theta) - 1, p the contact force per strand length"),
-      invariant_metric("strand_tension_law", "n_t / n_t,law(R, theta) - 1 on the strands in the ply's middle")};
+  std::vector<MetricSpec> metrics = ply_metric_specs();
   for (auto& spec : noether3d_metric_specs(false, std::nullopt)) metrics.push_back(std::move(spec));
-  metrics.push_back(diagnostic_metric("helix_angle", "theta in the ply's middle (degrees)"));
-  metrics.push_back(diagnostic_metric("helix_angle_from_moment", "theta at which the M_t law gives the measured M_t (degrees)"));
-  metrics.push_back(diagnostic_metric("ply_radius", "R / h in the ply's middle"));
-  metrics.push_back(diagnostic_metric("tail_tension", "n.t on the root's tail (= the applied T_ext at equilibrium)"));
-  metrics.push_back(diagnostic_metric("twisting_moment", "M_t, m.t on the root's tail"));
   metrics.push_back(diagnostic_metric("contact_pairs", "segment pairs closer than 2h at equilibrium"));
   metrics.push_back(diagnostic_metric("iterations", "Newton iterations of the pseudo-transient relaxation"));
   metrics.push_back(diagnostic_metric("equilibrium_residual", "final scaled residual"));
@@ -228,16 +185,6 @@ Case plectoneme_case(const std::string& name, double angle, std::vector<double> 
   return c;
 }
 
-// The first-order envelope of the measured law errors e_N at N = 200, 400, 800: C = 2 max_N |e_N| N
-// (h = 1/N), so that the bound at the finest level is twice the largest error the three levels would
-// give there at first order (the errors fall, but not monotonically: the ply's contact set changes).
-GateSpec law_envelope(const std::string& metric, double e200, double e400, double e800) {
-  const double at_800 = std::max({std::abs(e200) / 4.0, std::abs(e400) / 2.0, std::abs(e800)});
-  GateSpec gate = measured_bound(metric, at_800, 1.0 / 800.0, 1.0);
-  gate.rationale = "first-order envelope of the errors measured at N = 200, 400, 800, times 2";
-  return gate;
-}
-
 }  // namespace
 
 void add_plectoneme_nodal(Registry& registry) {
@@ -254,9 +201,10 @@ void add_plectoneme_nodal(Registry& registry) {
                         "barrier (fitted orders 1.22 at 12 deg, 1.38 at 10 deg, 1.39 at barrier 50)"),
        measured_order_gate("H_deviation", 1.5, "measured 1.49, 1.61 over N = 200 .. 800 at the defaults"),
        measured_bound("H_deviation", 0.0116, 1.0 / 800.0, 1.5),
-       law_envelope("tension_law", -0.0137, -0.0048, -0.0025), law_envelope("moment_law", -0.0057, -0.0012, -0.0003),
-       law_envelope("contact_force_law", -0.0132, -0.0030, -0.0004),
-       law_envelope("strand_tension_law", -0.0584, -0.0192, -0.0038)}));
+       law_envelope("tension_law", {200, 400, 800}, {-0.0137, -0.0048, -0.0025}),
+       law_envelope("moment_law", {200, 400, 800}, {-0.0057, -0.0012, -0.0003}),
+       law_envelope("contact_force_law", {200, 400, 800}, {-0.0132, -0.0030, -0.0004}),
+       law_envelope("strand_tension_law", {200, 400, 800}, {-0.0584, -0.0192, -0.0038})}));
 
   // Over the helix angle (`--set helix_angle=`, where the order gate still applies; not as cases of the
   // default run, whose every case sweeps three levels: one level costs 4 to 15 s there), measured at

@@ -57,7 +57,7 @@ std::vector<Vec3> dense_curve(const PlyLayout& p) {
 
 }  // namespace
 
-TiedRod lay_plectoneme(const PlyLayout& ply, std::size_t elements) {
+std::vector<Vec3> plectoneme_curve(const PlyLayout& ply) {
   require_positive("ply_radius", ply.ply_radius);
   require_open_interval("helix_angle", ply.helix_angle, 0.0, 0.25 * kPi);
   require_positive("ply_length", ply.ply_length);
@@ -65,7 +65,11 @@ TiedRod lay_plectoneme(const PlyLayout& ply, std::size_t elements) {
   require_positive("loop_height", ply.loop_height);
   require_non_negative("loop_bulge", ply.loop_bulge);
   require_positive("tail_length", ply.tail_length);
-  return rod_on_curve(dense_curve(ply), elements, true);
+  return dense_curve(ply);
+}
+
+TiedRod lay_plectoneme(const PlyLayout& ply, std::size_t elements) {
+  return rod_on_curve(plectoneme_curve(ply), elements, true);
 }
 
 PulledPly pull_laid_ply(const TiedRod& laid, double twist_rate, double B, double C, double tension,

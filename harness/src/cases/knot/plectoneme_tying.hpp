@@ -24,6 +24,7 @@
 //
 // The rod's vertices are placed on this curve by rod_on_curve (both ends clamped).
 #include <cstddef>
+#include <vector>
 
 #include "rod_on_curve.hpp"
 #include "rodvv/solvers/rod3d/model.hpp"
@@ -41,8 +42,11 @@ struct PlyLayout {
   double tail_length = 0.0;      // > 0
 };
 
-// InputError naming the field unless every length is finite and positive (loop_bulge >= 0), the helix
-// angle in (0, pi/4), elements >= 3.
+// The laid curve, densely sampled (2000 points per piece: chord error ~ (piece / 2000)^2 curvature).
+// InputError naming the field unless every length is finite and positive (loop_bulge >= 0) and the helix
+// angle in (0, pi/4).
+std::vector<Vec3> plectoneme_curve(const PlyLayout& ply);
+// The nodal rod's vertices on it (rod_on_curve, both ends clamped); InputError as above, or elements < 3.
 TiedRod lay_plectoneme(const PlyLayout& ply, std::size_t elements);
 
 // The laid rod as knot/plectoneme-nodal relaxes it: inextensible, bending B about both axes, twisting

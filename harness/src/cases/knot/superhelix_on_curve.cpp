@@ -12,8 +12,10 @@
 
 namespace rodvv::harness::knot_cases {
 
-LaidSuperHelix superhelix_on_curve(const std::vector<Vec3>& curve, std::size_t elements, const Vec3& normal) {
+LaidSuperHelix superhelix_on_curve(const std::vector<Vec3>& curve, std::size_t elements, const Vec3& normal,
+                                   double twist) {
   require_at_least("elements", elements, 1);
+  require_finite("twist", twist);
   require_at_least("curve points", curve.size(), 2);
   std::vector<double> arclength(curve.size(), 0.0);
   for (std::size_t i = 1; i < curve.size(); ++i) arclength[i] = arclength[i - 1] + (curve[i] - curve[i - 1]).norm();
@@ -42,11 +44,11 @@ LaidSuperHelix superhelix_on_curve(const std::vector<Vec3>& curve, std::size_t e
   laid.q = VecX::Zero(3 * static_cast<Eigen::Index>(elements));
   Vec3 p = laid.root_position;
   Mat3 R = laid.root_frame;
-  Vec3 previous = Vec3::Zero();  // the last element's strain: the next one's start
+  Vec3 previous(twist, 0.0, 0.0);  // the last element's strain: the next one's start
   for (std::size_t e = 0; e < elements; ++e) {
     const Vec3 target = point_at(static_cast<double>(e + 1) * ell);
     Vec3 q = previous;
-    // Gauss-Newton on |p + R G(ell; q) e0 - target|^2 over (kappa1, kappa2), twist held at 0, each
+    // Gauss-Newton on |p + R G(ell; q) e0 - target|^2 over (kappa1, kappa2), twist held, each
     // step shortened to keep the element within a quarter turn (|kappa| ell <= pi / 2): a target
     // the arc cannot reach (a curve sharper than the elements) draws the arc towards it, not round.
     constexpr double kMaxTurn = 0.5 * std::numbers::pi;

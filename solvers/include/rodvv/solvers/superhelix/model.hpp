@@ -38,6 +38,15 @@ struct SelfContact {
   double stiffness = 0.0;  // k > 0, force / length^3: the cubic barrier's, per unit length of rod
 };
 
+// A sliding clamp at the tip (tip_guide.hpp; statics only): the tip slides along the line through `point`
+// along frame.col(0), its frame held at `frame`, by springs of stiffness k (off the axis) and k_r (turning).
+struct TipGuide {
+  double stiffness = 0.0;             // k >= 0, force / length; 0: no guide (the tip is free)
+  double rotational_stiffness = 0.0;  // k_r > 0 with a guide, force x length (moment per radian^2 / 2)
+  Vec3 point = Vec3::Zero();          // a point of the axis
+  Mat3 frame = Mat3::Identity();      // the tip frame held (a rotation); its n0 is the axis
+};
+
 struct RodModel {
   double length = 1.0;
   std::size_t elements = 8;
@@ -56,13 +65,14 @@ struct RodModel {
   // dynamics, the solution struct and the super-clothoid refuse a non-empty list.
   std::vector<Vec3> point_forces;
   SelfContact self_contact;               // radius 0: none. Statics only (static_residual, static_jacobian)
+  TipGuide tip_guide;                     // stiffness 0: none (a free tip). Statics only
   double rayleigh_stiffness = 0.0;        // gamma: damping force -gamma K qdot
   std::size_t gauss_points = 4;           // Gauss-Legendre points per element (mass, gravity)
 };
 
 void validate(const RodModel& model);
-// InputError "point_forces" or "self_contact" naming `what` (the dynamics, the solution struct, the
-// super-clothoid), which do not take these statics-only loads.
+// InputError "point_forces", "self_contact" or "tip_guide" naming `what` (the dynamics, the total energy,
+// the super-clothoid, inverse statics), which do not take these statics-only loads.
 void require_statics_only_loads_absent(const RodModel& model, const char* what);
 
 // (rho I0, rho I1, rho I2) of a solid elliptic section of line density rho S with semi-axis a along

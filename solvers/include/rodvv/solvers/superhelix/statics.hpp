@@ -21,6 +21,9 @@
 // energy only after a relative motion of about 4h; 3h leaves them overlapping by h or more, a barrier
 // energy the line search rejects. Same convergence test as Newton.
 //
+// A sliding clamp at the tip (model.tip_guide, tip_guide.hpp): r gains the gradient of its springs'
+// energy (never scaled by the load factor), the Jacobian their Hessian, the potential their energy.
+//
 // Newton (newton.hpp, shared with the super-clothoid): the exact Jacobian dr/dq = K - lambda dF_ext/dq
 // (load_stiffness.hpp, O(N^2); it replaced central differences of the residual, whose ~1e-11
 // truncation made Newton linear with a contraction ~1e-10), LU with partial pivoting, backtracking
