@@ -13,6 +13,8 @@
 //    braid closure, the potential Newton with line self-contact, metrics) at N = 50, 100, 200, 400.
 //  - BM_Plectoneme: the whole knot/plectoneme-nodal level (laying the 15-degree ply, its relaxation under
 //    the dead pull with self-contact, metrics) at N = 200, 400, 800.
+//  - BM_PlectonemeSuperHelix: the whole knot/plectoneme-superhelix level (laying the twisted Super-Helix on the
+//    ply, its relaxation in the sliding clamp with line self-contact, metrics) at N = 70, 100, 200.
 // The exponent is the least-squares slope of log(cpu time) against log N of the BM_NewtonIteration rows.
 #include <benchmark/benchmark.h>
 
@@ -107,6 +109,12 @@ void BM_Plectoneme(benchmark::State& bench) {
   for (auto _ : bench) benchmark::DoNotOptimize(c->run_level(c->info.parameters, double(bench.range(0))));
 }
 BENCHMARK(BM_Plectoneme)->Arg(200)->Arg(400)->Arg(800)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+void BM_PlectonemeSuperHelix(benchmark::State& bench) {
+  const auto* c = rodvv::harness::default_registry().find("knot/plectoneme-superhelix");
+  for (auto _ : bench) benchmark::DoNotOptimize(c->run_level(c->info.parameters, double(bench.range(0))));
+}
+BENCHMARK(BM_PlectonemeSuperHelix)->Arg(70)->Arg(100)->Arg(200)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace
 
