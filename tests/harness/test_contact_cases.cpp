@@ -34,7 +34,7 @@ INSTANTIATE_TEST_SUITE_P(AllContactCases, ContactCase,
                          });
 
 TEST(ContactCases, AllTenAreRegistered) {
-  EXPECT_EQ(rodvv::testing::case_names_of_family("elastica-contact").size(), 11u);
+  EXPECT_EQ(rodvv::testing::case_names_of_family("elastica-contact").size(), 15u);
 }
 
 // The solver runs with the wall at 0.101 while the reference keeps 0.1: P moves by ~0.3, far above

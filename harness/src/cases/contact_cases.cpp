@@ -8,6 +8,13 @@
 //   elastica-contact/cavity-point/polygon-lcp  the point contact solved by ContactMethod::NewtonLcp
 //                                            (Josephy-Newton with the shared Lemke LCP), gated against
 //                                            the same references and against the active-set result
+//   elastica-contact/cavity-point/<scheme>-post, -ring  the point contact against a round ceiling that
+//                                            touches the rod where the wall y = a does: a post (disk, rod
+//                                            outside) of radius 0.15 above, or a ring (rod inside) of radius
+//                                            5 about a centre below. Both curve away from the rod there, so
+//                                            the solution is the wall's: the cavity references, and P equal
+//                                            to the walls' to round-off (issue 13, class 5: the advertised
+//                                            disk obstacles had no case)
 //   elastica-contact/soft-wall              V(y) = b/(a - y) + b/(a + y), b = 1e-4 .. 1e-7 (level = b),
 //                                            N = 256 arcs: P and H tend to the hard wall, H constant
 //   elastica-contact/propped-cantilever/<scheme>  clamped, self-weight w, frictionless prop at the
@@ -17,6 +24,7 @@
 // shapes are drawn with the wall lines.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <utility>
@@ -110,6 +118,43 @@ const char* regime_words(Regime r) {
   return r == Regime::Free ? "free (no contact)" : r == Regime::Point ? "point-contact" : "line-contact (flat <= 0.4 L)";
 }
 
+// What stands at y = +a above the column (the floor y = -a is always a wall).
+enum class Ceiling { Wall, Post, Ring };
+constexpr double kPostRadius = 0.15;  // any radius: the post curves away from the rod
+// The ring curves toward the rod (y = a - x^2 / 2R about the contact): it must curve less than the rod there
+// (|kappa_c| = 0.77 at the default shortening: R > 1.3) and still hold its pinned ends (sqrt(0.487^2 + (R -
+// a)^2) < R: R > 1.2 at a = 0.1).
+constexpr double kRingRadius = 5.0;
+
+const char* ceiling_id(Ceiling c) { return c == Ceiling::Wall ? "" : c == Ceiling::Post ? "-post" : "-ring"; }
+
+// The obstacles: the walls, or the floor and a disk touching y = a above the chord's midpoint x = (1 - d) / 2.
+std::vector<e2d::Obstacle> cavity_obstacles(Ceiling ceiling, double a, double shortening) {
+  if (ceiling == Ceiling::Wall) return e2d::cavity_walls(a);
+  const double x_mid = 0.5 * (1.0 - shortening);
+  if (ceiling == Ceiling::Post) return {e2d::floor_at(-a), e2d::disk_outside({x_mid, a + kPostRadius}, kPostRadius)};
+  return {e2d::floor_at(-a), e2d::disk_inside({x_mid, a - kRingRadius}, kRingRadius)};
+}
+
+// The ring touches the rod from inside where the rod curves more than it, and must hold the pinned ends:
+// InputError naming the parameter otherwise (near the point regime's end kappa_c -> 0 and the rod would
+// lean on the ring over a stretch; a narrow gap puts the ends outside it).
+void check_ring(const Parameters& p) {
+  const double d = parameter_value(p, "shortening"), a = parameter_value(p, "wall_gap");
+  const double x_mid = 0.5 * (1.0 - d);
+  if (!(std::hypot(x_mid, kRingRadius - a) < kRingRadius - 0.01))
+    throw InputError("wall_gap", fmt::format("invalid parameter 'wall_gap' = {}: the ring of radius {} touching y = "
+                                             "wall_gap does not hold the pinned ends (needs wall_gap > {:.4g})",
+                                             format_value(a), kRingRadius,
+                                             kRingRadius - std::sqrt(std::pow(kRingRadius - 0.01, 2) - x_mid * x_mid)));
+  const double kappa_c = std::abs(ref::cavity_from_shortening({1.0, 1.0, a}, d).kappa_mid);
+  if (!(kappa_c >= 1.5 / kRingRadius))
+    throw InputError("shortening", fmt::format("invalid parameter 'shortening' = {}: the rod's curvature at the "
+                                               "contact, {:.4g}, must be >= 1.5 / {} for the ring to touch it at one "
+                                               "point only",
+                                               format_value(d), kappa_c, kRingRadius));
+}
+
 // The longest flat the line case runs: its solvers, measured over wall_gap 0.03 ... 0.2 and flats
 // 0.05 ... 0.4 L, pass every gate (but H_spread's order, 1.88 at l = 0.2 L on both schemes' default
 // levels, pre-asymptotic: 2.06 over N = 32 ... 1024); beyond, the arcs scheme's active set cycles (l = 0.45 L at wall_gap 0.1:
@@ -145,7 +190,7 @@ void check_regime(Regime r, const Parameters& p) {
 }
 
 LevelOutput run_cavity_level(e2d::Scheme scheme, Regime regime, const Parameters& p, double level,
-                             CondensedLcp lcp = std::nullopt) {
+                             CondensedLcp lcp = std::nullopt, Ceiling ceiling = Ceiling::Wall) {
   const double d = parameter_value(p, "shortening"), a = parameter_value(p, "wall_gap");
   const ref::CavityState r = ref::cavity_from_shortening({1.0, 1.0, a}, d);
   e2d::Problem problem;
@@ -163,10 +208,19 @@ LevelOutput run_cavity_level(e2d::Scheme scheme, Regime regime, const Parameters
     contact.lcp = *lcp;
     contact.candidate_distance = 0.5 * a;  // the far wall and the pinned ends stay out of the LCP
   }
-  const auto c = e2d::solve_static_contact(problem, {scheme, n}, e2d::cavity_walls(a), options, guess, contact);
+  const auto c =
+      e2d::solve_static_contact(problem, {scheme, n}, cavity_obstacles(ceiling, a, d), options, guess, contact);
   const PlanarRodSolution& rod = c.rod;
 
   LevelOutput out;
+  if (ceiling != Ceiling::Wall) {
+    // The same discrete problem as against the wall while only the node at the midpoint touches: P to
+    // round-off, in eps of P.
+    const auto walls = e2d::solve_static_contact(problem, {scheme, n}, e2d::cavity_walls(a), options, guess, contact);
+    const double P_walls = -walls.rod.force_x[n / 2];
+    const double dP = std::abs(-rod.force_x[n / 2] - P_walls) / (std::numeric_limits<double>::epsilon() * std::abs(P_walls));
+    out.metrics["P_vs_walls"] = {dP, 0.0, dP};
+  }
   if (lcp) {
     // Agreement with the active-set path (same discrete problem, both to residual <= 1e-10) and
     // the residual of the last LCP relative to its max|b|.
@@ -216,6 +270,19 @@ LevelOutput run_cavity_level(e2d::Scheme scheme, Regime regime, const Parameters
     out.metrics["flat_kappa"] = {flat_kappa, 0.0, flat_kappa};
   }
   add_plots(out, rod, force, a);
+  if (ceiling != Ceiling::Wall) {  // draw the disk's arc over the chord instead of the wall y = a
+    const bool post = ceiling == Ceiling::Post;
+    const double R = post ? kPostRadius : kRingRadius, x_mid = 0.5 * (1.0 - d), yc = post ? a + R : a - R;
+    std::vector<double> xs, ys;
+    for (int i = 0; i <= 100; ++i) {
+      const double x = x_mid + std::min(R, x_mid) * (2.0 * i / 100.0 - 1.0);
+      xs.push_back(x);
+      const double half = std::sqrt(std::max(0.0, R * R - (x - x_mid) * (x - x_mid)));
+      ys.push_back(post ? yc - half : yc + half);
+    }
+    for (auto& series : out.series)
+      if (series.name == "shape|wall y = +a") series = thin_series(post ? "shape|post" : "shape|ring", "x", "y", xs, ys);
+  }
   return out;
 }
 
@@ -276,9 +343,10 @@ void add_cavity_gates(Case& c, e2d::Scheme scheme, Regime regime) {
                                        "kappa = 0 on the flat contact: round-off (measured <= 5e-15)"));
 }
 
-Case cavity_case(e2d::Scheme scheme, Regime regime, CondensedLcp lcp = std::nullopt) {
+Case cavity_case(e2d::Scheme scheme, Regime regime, CondensedLcp lcp = std::nullopt, Ceiling ceiling = Ceiling::Wall) {
   const bool pgs = lcp == solvers::contact::LcpMethod::ProjectedGaussSeidel;
-  const std::string id = std::string(e2d::scheme_id(scheme)) + (lcp ? (pgs ? "-pgs" : "-lcp") : "");
+  const std::string id =
+      std::string(e2d::scheme_id(scheme)) + (lcp ? (pgs ? "-pgs" : "-lcp") : "") + ceiling_id(ceiling);
   const double d = regime == Regime::Free ? 0.020 : regime == Regime::Point ? 0.026 : 0.0345;
   Case c;
   c.info.name = std::string("elastica-contact/") + regime_id(regime) + "/" + id;
@@ -343,8 +411,34 @@ Case cavity_case(e2d::Scheme scheme, Regime regime, CondensedLcp lcp = std::null
                                        pgs ? "PGS sweeps until the residual is <= its tolerance 1e-13 max|b|"
                                            : "Lemke is exact: round-off, below the LCP tolerance 1e-13 max|b|"));
   }
-  c.run_level = [scheme, regime, lcp](const Parameters& p, double level) {
-    return run_cavity_level(scheme, regime, p, level, lcp);
+  if (ceiling == Ceiling::Ring)
+    require_window(c, "the ring curves less than the rod at the contact (|kappa_c| >= 1.5 / 5) and holds the pinned ends",
+                   [](const Parameters& p) { check_ring(p); });
+  if (ceiling != Ceiling::Wall) {
+    c.info.physics = ceiling == Ceiling::Post
+                         ? "Pinned-pinned elastica, L = EI = 1, above the frictionless wall y = -a and below a rigid "
+                           "post (disk of radius 0.15) whose lowest point is at (chord / 2, a); end-shortening imposed; "
+                           "hard contact at the nodes."
+                         : "Pinned-pinned elastica, L = EI = 1, above the frictionless wall y = -a and inside a rigid "
+                           "ring of radius 5 whose highest point is at (chord / 2, a); end-shortening imposed; hard "
+                           "contact at the nodes.";
+    c.info.reference += "; the round ceiling touches where the wall y = a does and curves away from the rod there, "
+                        "so the solution is the walls'";
+    c.info.metrics.push_back(invariant_metric("P_vs_walls", "|P - P(walls)| / (eps P(walls))", std::nullopt));
+    // One active node at the same place with the same normal (0, -1): the same Newton systems, up to the
+    // rounding of the disk's gap |r - c| - R, which cancels two numbers of the disk's size (0.4 for the post,
+    // 10 for the ring, against a = 0.1) and moves the contact height by that many eps; the load P feels it
+    // through the column's stiffness. Measured (2026-11-27, N = 32 .. 256, both schemes): at most 30 eps
+    // (post) and 716 eps (ring); bound twice that.
+    GateSpec same_as_walls = upper_bound_gate(
+        "P_vs_walls", ceiling == Ceiling::Post ? 64.0 : 1500.0, GateScope::AllLevels,
+        "the same discrete problem as against the wall, up to the rounding of the disk's gap at the disk's size "
+        "(measured <= 30 eps for the post, 716 eps for the ring of radius 5; twice that)");
+    same_as_walls.measured = true;
+    c.gates.push_back(same_as_walls);
+  }
+  c.run_level = [scheme, regime, lcp, ceiling](const Parameters& p, double level) {
+    return run_cavity_level(scheme, regime, p, level, lcp, ceiling);
   };
   return c;
 }
@@ -490,6 +584,9 @@ void register_contact_cases(Registry& registry) {
   // The same LCPs by projected Gauss-Seidel (issue 13, class 5: the advertised PGS path had no case).
   // Measured at N = 32, 64, 128: 16, 53, 162 sweeps in all, P within 4.1e-8 of the active-set path.
   registry.add(cavity_case(e2d::Scheme::Polygon, Regime::Point, solvers::contact::LcpMethod::ProjectedGaussSeidel));
+  // The disk obstacles (issue 13, class 5): a post and a ring in place of the wall y = a.
+  for (Ceiling ceiling : {Ceiling::Post, Ceiling::Ring})
+    for (e2d::Scheme scheme : kSchemes) registry.add(cavity_case(scheme, Regime::Point, std::nullopt, ceiling));
   registry.add(soft_case());
   for (e2d::Scheme scheme : kSchemes) registry.add(propped_case(scheme));
 }
