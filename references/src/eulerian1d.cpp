@@ -58,7 +58,7 @@ ImpactPhase impact_phase(const BarrierImpact& p, double t) {
 
 struct Position {
   double operator()(const RigidTranslation& p, double X, double t) const {
-    return p.x_left0 + X + p.velocity * t;
+    return p.x_left0 + X + p.velocity * t + 0.5 * p.acceleration * t * t;
   }
   double operator()(const StandingWave& p, double X, double t) const {
     const double k = kPi / p.material.length, w = bar_wave_speed(p.material) * k;
@@ -88,7 +88,7 @@ struct Position {
 };
 
 struct Velocity {
-  double operator()(const RigidTranslation& p, double, double) const { return p.velocity; }
+  double operator()(const RigidTranslation& p, double, double t) const { return p.velocity + p.acceleration * t; }
   double operator()(const StandingWave& p, double X, double t) const {
     const double k = kPi / p.material.length, w = bar_wave_speed(p.material) * k;
     return -p.amplitude * w * std::cos(k * X) * std::sin(w * t);
@@ -153,6 +153,7 @@ void validate(const BarMotion& motion) {
         if constexpr (std::is_same_v<T, RigidTranslation>) {
           require_finite("x_left0", p.x_left0);
           require_finite("velocity", p.velocity);
+          require_finite("acceleration", p.acceleration);
         } else if constexpr (std::is_same_v<T, StandingWave>) {
           require_finite("x_left0", p.x_left0);
           require_open_interval("amplitude", p.amplitude, -L0 / kPi, L0 / kPi);  // F > 0
@@ -178,7 +179,8 @@ double bar_energy(const BarMotion& motion) {
       [](const auto& p) -> double {
         using T = std::decay_t<decltype(p)>;
         const BarMaterial& m = p.material;
-        if constexpr (std::is_same_v<T, RigidTranslation>) return 0.5 * bar_mass(m) * p.velocity * p.velocity;
+        if constexpr (std::is_same_v<T, RigidTranslation>)  // the body force's potential: - M a x_centre
+          return 0.5 * bar_mass(m) * p.velocity * p.velocity - bar_mass(m) * p.acceleration * (p.x_left0 + 0.5 * m.length);
         else if constexpr (std::is_same_v<T, StandingWave>) {
           // All elastic at t = 0: int_0^L0 kappa/2 (A pi/L0)^2 sin^2(pi X/L0) dX.
           const double k = kPi / m.length;

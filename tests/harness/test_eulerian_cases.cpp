@@ -30,9 +30,9 @@ std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
 INSTANTIATE_TEST_SUITE_P(AllEulerianCases, EulerianCase,
                          ::testing::ValuesIn(rodvv::testing::case_names_of_family("eulerian1d")), test_name);
 
-TEST(EulerianCatalogue, HasTheFiveCasesWithGatesOnMass) {
+TEST(EulerianCatalogue, HasTheSixCasesWithGatesOnMass) {
   const auto names = rodvv::testing::case_names_of_family("eulerian1d");
-  EXPECT_EQ(names.size(), 5u);
+  EXPECT_EQ(names.size(), 6u);
   for (const auto& name : names) {
     const Case& c = named_case(name);
     EXPECT_GE(c.info.resolution.default_levels.size(), c.fit_levels) << name;

@@ -229,6 +229,22 @@ TEST(EulerianReference, MatchesTheMpmathTable) {
   EXPECT_GT(std::abs(ref::bar_ends(wrong, 0.45).left - ref::bar_ends(sq, 0.45).left), 1e-6);
 }
 
+// Free fall: x = x0 + X + v0 t + a t^2 / 2, v = v0 + a t, F = 1, and the energy with the body force's potential
+// (1/2 M v^2 - M a x_centre) the same at every t.
+TEST(EulerianReference, FreeFallPositionVelocityAndEnergy) {
+  const ref::RigidTranslation fall{kMaterial, 0.3, -0.4, 0.9};
+  const double M = ref::bar_mass(kMaterial), L0 = kMaterial.length;
+  for (double t : {0.0, 0.7, 2.3}) {
+    for (double X : {0.0, 0.37, L0}) {
+      EXPECT_DOUBLE_EQ(ref::bar_position(fall, X, t), 0.3 + X - 0.4 * t + 0.45 * t * t);
+      EXPECT_DOUBLE_EQ(ref::bar_velocity(fall, X, t), -0.4 + 0.9 * t);
+      EXPECT_DOUBLE_EQ(ref::bar_stretch(fall, X, t), 1.0);
+    }
+    const double v = -0.4 + 0.9 * t, centre = ref::bar_position(fall, 0.5 * L0, t);
+    EXPECT_NEAR(0.5 * M * v * v - M * 0.9 * centre, ref::bar_energy(fall), 1e-14);
+  }
+}
+
 TEST(EulerianReference, BadInputNamesTheParameter) {
   auto expect_input_error = [](const ref::BarMotion& motion, const std::string& name) {
     try {
@@ -241,6 +257,7 @@ TEST(EulerianReference, BadInputNamesTheParameter) {
   expect_input_error(ref::RigidTranslation{{0.0, 1.0, 1.0}, 0.0, 0.0}, "rho0");
   expect_input_error(ref::RigidTranslation{{1.0, -1.0, 1.0}, 0.0, 0.0}, "kappa");
   expect_input_error(ref::RigidTranslation{{1.0, 1.0, 0.0}, 0.0, 0.0}, "length");
+  expect_input_error(ref::RigidTranslation{kMaterial, 0.0, 0.0, std::nan("")}, "acceleration");
   expect_input_error(ref::StandingWave{kMaterial, 0.0, 0.5}, "amplitude");  // A pi / L0 > 1: F < 0
   expect_input_error(ref::SqueezeRelease{kMaterial, 0.0, 1.5}, "stretch0");
   expect_input_error(ref::SqueezeRelease{kMaterial, 0.0, 0.0}, "stretch0");

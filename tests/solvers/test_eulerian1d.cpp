@@ -176,6 +176,33 @@ TEST(EulerianSimulation, RigidTranslationIsExactToRoundOff) {
   EXPECT_GT(worst, 10 * tol);
 }
 
+// A free fall under gravity g identifies the time step: v = v0 + g t exactly (the uniform velocity's transport
+// vanishes), and symplectic Euler (velocity first, then xi advected with the new v) leaves the bar ahead by
+// (g/2) sum dt_k^2, so xi = x - x_left is behind by as much at every solid node; an explicit-Euler position
+// update would leave it ahead by as much.
+TEST(EulerianSimulation, FreeFallErrorIsSymplecticEulersOwn) {
+  auto p = bar_problem(80, -0.5, 2.5, 0.4, 1.0, -0.3);
+  p.gravity = 0.7;
+  eu::Settings s;
+  s.t_end = 1.3;
+  s.snapshot_times = {1.3};
+  const auto r = eu::simulate(p, s);
+  double dt_squares = 0.0;
+  for (std::size_t k = 1; k < r.history.t.size(); ++k)
+    dt_squares += std::pow(r.history.t[k] - r.history.t[k - 1], 2);
+  const double t = 1.3, x_left = 0.4 - 0.3 * t + 0.5 * 0.7 * t * t;
+  const double tol = static_cast<double>(r.steps) * 4 * kEpsilon * 3.0;  // as the translation's
+  const auto& last = r.snapshots.back();
+  for (Eigen::Index j = 0; j < last.xi.size(); ++j) {
+    const double x = p.grid.node(static_cast<std::size_t>(j));
+    if (x < x_left || x > x_left + 1.0) continue;
+    const double error = last.xi(j) - (x - x_left);
+    EXPECT_NEAR(error, -0.35 * dt_squares, tol) << j;
+    EXPECT_GT(std::abs(error - 0.35 * dt_squares), 1e6 * tol) << j;  // the other Euler's sign is far off
+    EXPECT_NEAR(last.v(j), -0.3 + 0.7 * t, tol) << j;
+  }
+}
+
 TEST(EulerianSimulation, WorkBudgetBoundsTheStepsAndRefusesAnImpossibleRunAtOnce) {
   // least_cell_updates is a lower bound: dt <= cfl dx / c. For the rigid translation every step has
   // speed |v0| + c exactly (F = 1), so steps = ceil(t_end (|v0| + c) / (cfl dx)), at most

@@ -3,6 +3,8 @@
 // over the number of cells N on a fixed domain.
 //
 //   eulerian1d/translation     rigid translation: xi, v and the cell masses exact to round-off
+//   eulerian1d/free-fall       the same bar under gravity: v exact to round-off, xi off by the time step's
+//                              own error, (g/2) sum dt^2 (symplectic Euler: velocity first), to round-off
 //   eulerian1d/standing-wave   free-free standing wave (smooth): end positions converge at order 1
 //   eulerian1d/squeeze         the seed's squeeze: bar compressed to F0 = 0.1 and released; the length
 //                              is a triangle wave (period 2 L0/c); strain jumps: first-order upwind
@@ -115,6 +117,7 @@ struct Setup {
   double t_end = 1.0;
   std::optional<double> left_wall, right_wall;
   std::vector<double> profile_times;  // snapshot times for the profile plots
+  double gravity = 0.0;               // the body acceleration along +x
 };
 
 // A domain holding the exact motion over [0, t_end] (ends sampled) and the walls, with a margin of
@@ -145,6 +148,7 @@ Run simulate_setup(const Setup& setup, const Parameters& p, double level) {
   problem.material = {m.rho0, m.kappa, m.length};
   problem.left_wall = setup.left_wall;
   problem.right_wall = setup.right_wall;
+  problem.gravity = setup.gravity;
   const auto nodes = static_cast<Eigen::Index>(problem.grid.nodes());
   problem.xi0.resize(nodes);
   problem.v0.resize(nodes);
@@ -366,6 +370,115 @@ Case translation_case() {
   c.gates.push_back(upper_bound_gate("roundoff_per_step", 4.0, GateScope::AllLevels,
                                      "a few roundings of each quantity's size per step and per cell (measured <= "
                                      "1.66 over 15 parameter sets incl. the range ends, N = 50 .. 800)"));
+  c.gates.push_back(mass_gate());
+  return c;
+}
+
+// -- free fall --
+// Measured 2026-11-27 (N = 50 .. 800): xi_max_error 5.21e-3, 2.61e-3, 1.30e-3, 6.52e-4, 3.26e-4 (order 1.000);
+// step_error_mismatch 9.1e-4 .. 2.4e-3 roundings; velocity_max_error 3.8e-15 .. 6.4e-14.
+constexpr double kFreeFallXiAt200 = 1.3036e-3;
+// The unstressed bar of the translation case under gravity g: x = x0 + X + v0 t + g t^2 / 2 (references:
+// RigidTranslation with an acceleration). The velocity stays uniform, so its upwind transport vanishes and
+// v_n = v0 + g t_n exactly (round-off); xi stays linear, so its upwind advection is exact for the velocity
+// of the step. The step is symplectic Euler (simulate.cpp: v first, then xi advected with the new v): the
+// bar ends each step ahead by g dt^2 / 2, and after n steps by (g/2) sum_k dt_k^2 - first order in dt, the
+// scheme's own error with its own constant. The case checks both the order and that constant: xi_error =
+// xi - xi_exact (the same at every solid node) against -(g/2) sum dt_k^2 from the run's own steps, to
+// round-off. An explicit-Euler position update (xi advected with the old v) gives the opposite sign.
+Setup free_fall_setup(const Parameters& p) {
+  ref::RigidTranslation motion{material_of(p), 0.0, parameter_value(p, "v0"), parameter_value(p, "g")};
+  return {motion, parameter_value(p, "t_end"), {}, {}, {0.5 * parameter_value(p, "t_end")}, parameter_value(p, "g")};
+}
+
+Case free_fall_case() {
+  Case c = base_case("free-fall", "free fall under gravity (symplectic Euler's own error, to round-off)",
+                     "Unstressed bar released at v0 under a body acceleration g: xi_t + v xi_x = 0, v_t + v v_x = g, "
+                     "F = 1, no stress.",
+                     "xi = x - x0 - v0 t - g t^2 / 2, v = v0 + g t, rho = rho0 inside the bar; the scheme's error "
+                     "(g/2) sum dt_k^2 in position");
+  c.info.parameters = material_parameters();
+  c.info.parameters.push_back(make_parameter("v0", -0.3, -10.0, 10.0, false, false, "length/time", "initial velocity"));
+  c.info.parameters.push_back(make_parameter("g", 0.7, -10.0, 10.0, false, false, "length/time^2",
+                                             "body acceleration along +x (gravity)"));
+  c.info.parameters.push_back(make_parameter("t_end", 1.3, 0.0, 10.0, true, false, "time", "horizon"));
+  c.info.resolution = cell_resolution({50, 100, 200}, {50, 100, 200, 400, 800});
+  c.info.metrics = {
+      {"xi_max_error", MetricKind::Error, "length", "max over the solid's nodes |xi - xi_exact| at t_end", false, 1.0},
+      {"step_error_mismatch", MetricKind::Invariant, "",
+       "|mean(xi - xi_exact) + (g/2) sum dt_k^2| / (eps (steps + N) X): the position error against symplectic "
+       "Euler's own, in roundings (X the larger of the domain's length and c t_end)",
+       false, std::nullopt},
+      {"velocity_max_error", MetricKind::Error, "length/time", "max over the solid's nodes |v - v0 - g t_end|", false,
+       std::nullopt},
+      mass_metric(), steps_metric()};
+  c.check_parameters = [](const Parameters& p) { ref::validate(free_fall_setup(p).motion); };
+  c.run_level = [](const Parameters& p, double level) {
+    const Setup setup = free_fall_setup(p);
+    const Run run = simulate_setup(setup, p, level);
+    LevelOutput out;
+    const auto& last = run.result.snapshots.back();
+    const eu::Grid& grid = run.result.grid;
+    double xi_error = 0.0, xi_error_sum = 0.0, v_error = 0.0;
+    std::size_t solid = 0;
+    for (std::size_t j = 0; j < grid.nodes(); ++j) {
+      const auto exact = ref::bar_eulerian_state(setup.motion, grid.node(j), setup.t_end);
+      if (!exact.solid) continue;
+      const double e = last.xi(static_cast<Eigen::Index>(j)) - exact.xi;
+      xi_error = std::max(xi_error, std::abs(e));
+      xi_error_sum += e;
+      v_error = std::max(v_error, std::abs(last.v(static_cast<Eigen::Index>(j)) - exact.velocity));
+      ++solid;
+    }
+    // The scheme's own error: the bar ahead by (g/2) sum dt^2, so xi (= x - x_left) behind by as much.
+    const auto& t = run.result.history.t;
+    double dt_squares = 0.0;
+    for (std::size_t k = 1; k < t.size(); ++k) dt_squares += (t[k] - t[k - 1]) * (t[k] - t[k - 1]);
+    const double g = parameter_value(p, "g"), predicted = -0.5 * g * dt_squares;
+    // One rounding per step and cell of the larger of the domain and the wave's travel c t_end: rounded xi
+    // differences give F - 1 ~ eps and a stress kappa eps, whose velocity noise ~ c eps moves the bar (at kappa
+    // = 1e6, cfl = 1: 31 roundings of the domain, 0.04 of c t_end).
+    const ref::BarMaterial m = material_of(p);
+    const double size = std::max(grid.x_max - grid.x_min, std::sqrt(m.kappa / m.rho0) * setup.t_end);
+    const double roundings = kEps * static_cast<double>(run.result.steps + grid.cells) * size;
+    out.metrics["xi_max_error"] = length_error_sample(xi_error, p);
+    out.metrics["step_error_mismatch"] = deviation_sample(std::abs(xi_error_sum / double(solid) - predicted) / roundings);
+    out.metrics["velocity_max_error"] = {v_error, 0.0, v_error, std::abs(parameter_value(p, "v0")) + std::abs(g) * setup.t_end};
+    add_common_outputs(setup, p, level, run, out);
+    return out;
+  };
+  // Where the levels resolve the fall: the bar spans at least about 8 cells of the coarsest grid (the domain holds
+  // its travel |v0| t + |g| t^2 / 2, at most 5 L0), and the step, at most cfl dx / c, is small against t_end
+  // (c t_end >= L0): at (rho0, kappa) = (1e3, 0.01) the steps near v = 0 span tenths of t_end and the order
+  // falls to 0.38; at g = 10, t_end = 10 a cell is wider than the bar.
+  require_window(c, "|v0| t_end + |g| t_end^2 / 2 <= 5 L0 and sqrt(kappa / rho0) t_end >= L0", [](const Parameters& p) {
+    const double t = parameter_value(p, "t_end"), L0 = parameter_value(p, "L0");
+    const double travel = std::abs(parameter_value(p, "v0")) * t + 0.5 * std::abs(parameter_value(p, "g")) * t * t;
+    if (!(travel <= 5.0 * L0))
+      throw InputError("t_end", fmt::format("invalid parameter 't_end' = {}: the fall |v0| t_end + |g| t_end^2 / 2 = "
+                                            "{:.4g} must be <= 5 L0 = {:.4g} (the coarsest grid must resolve the bar)",
+                                            format_value(t), travel, 5.0 * L0));
+    const double wave_speed = std::sqrt(parameter_value(p, "kappa") / parameter_value(p, "rho0"));
+    if (!(wave_speed * t >= L0))
+      throw InputError("kappa", fmt::format("invalid parameter 'kappa': the wave speed sqrt(kappa / rho0) = {:.4g} "
+                                            "must be >= L0 / t_end = {:.4g} (the steps must be small against t_end)",
+                                            wave_speed, L0 / t));
+  });
+  c.gates.push_back(order_gate("xi_max_error", 1.0, "symplectic Euler's position error (g/2) sum dt^2 = O(dt), dt ~ dx"));
+  GateSpec bound = scaled_upper_bound_gate("xi_max_error", 2.0 * kFreeFallXiAt200 * 200.0, 1.0, GateScope::FinestLevel,
+                                           "C = 2 x the value measured at the finest default level / h");
+  bound.measured = true;
+  c.gates.push_back(bound);
+  c.gates.push_back(upper_bound_gate("step_error_mismatch", 1.0, GateScope::AllLevels,
+                                     "the position error is symplectic Euler's own to within one rounding of the "
+                                     "domain's size (or c t_end) per step and cell (measured <= 2.4e-3 at the "
+                                     "defaults, <= 0.04 over the parameters' ends); the other Euler's is 1e9 times "
+                                     "over"));
+  GateSpec velocity = upper_bound_gate("velocity_max_error", 1e-12, GateScope::AllLevels,
+                                       "v = v0 + g sum dt exactly: the sum's rounding only (measured <= 6.4e-14 at N "
+                                       "<= 800)");
+  velocity.measured = true;
+  c.gates.push_back(velocity);
   c.gates.push_back(mass_gate());
   return c;
 }
@@ -757,6 +870,7 @@ Case with_work_budget(Case c, LeastWorkAt least_work, std::string time_span) {
 
 void register_eulerian_cases(Registry& registry) {
   registry.add(with_work_budget(translation_case(), least_work_of(translation_setup), "the parameter t_end"));
+  registry.add(with_work_budget(free_fall_case(), least_work_of(free_fall_setup), "the parameter t_end"));
   registry.add(with_work_budget(standing_wave_case(), least_work_of(standing_wave_setup),
                                 "periods times 2 L0/c"));
   registry.add(with_work_budget(squeeze_case(), least_work_of(squeeze_setup), "one period 2 L0/c"));

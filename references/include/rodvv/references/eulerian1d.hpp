@@ -12,7 +12,8 @@
 //
 // Units: any consistent set; lengths in the unit of L0, time in L0 / c when rho0 = kappa = L0 = 1.
 // Four motions:
-//  - RigidTranslation: x = x_left0 + X + v t.
+//  - RigidTranslation: x = x_left0 + X + v t + a t^2 / 2 (a: a uniform body acceleration, gravity; the
+//    bar stays unstressed: free fall).
 //  - StandingWave (free-free): x = x_left0 + X + A cos(pi X / L0) cos(pi c t / L0); ends
 //    x_left0 + A cos(pi c t/L0) and x_left0 + L0 - A cos(pi c t/L0); period 2 L0/c; needs A pi/L0 < 1.
 //  - SqueezeRelease: a bar compressed uniformly to F0 (0 < F0 < 1), centred at `center`, released
@@ -39,7 +40,8 @@ struct BarMaterial {
 struct RigidTranslation {
   BarMaterial material;
   double x_left0 = 0.0;  // position of X = 0 at t = 0
-  double velocity = 0.0;
+  double velocity = 0.0;      // at t = 0
+  double acceleration = 0.0;  // a uniform body acceleration (gravity along +x)
 };
 
 struct StandingWave {
@@ -91,7 +93,8 @@ void validate(const BarMotion& motion);
 
 double bar_wave_speed(const BarMaterial& material);  // c = sqrt(kappa / rho0)
 double bar_mass(const BarMaterial& material);        // rho0 L0 = integral of rho dx
-double bar_energy(const BarMotion& motion);          // kinetic + elastic, conserved
+// kinetic + elastic (+ the body force's potential - rho0 L0 a x_centre for a falling bar), conserved; at t = 0
+double bar_energy(const BarMotion& motion);
 BarMaterial material_of(const BarMotion& motion);
 
 // Lagrangian description at material point X in [0, L0] and time t >= 0.
