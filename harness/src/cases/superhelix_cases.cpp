@@ -564,18 +564,10 @@ LevelOutput run_modes(const Parameters& p, double level) {
 // three components (twist, kappa1, kappa2): it swings and twists out of plane. L = 0.7, rho S = 0.3.
 // J_scale multiplies the rotational inertia (0: the translational-only Super-Helix, whose twist is
 // nearly massless: it gains energy at some steps, test FreeMotionWithoutRotationalInertiaGainsEnergy).
-constexpr double kEnergyRodLength = 0.7;
+constexpr double kEnergyRodLength = superhelix_cases::kEnergyReleaseLength;
 sh::RodModel energy_model(const Parameters& p) {
-  sh::RodModel model;
-  model.elements = element_count(parameter_value(p, "N"));
-  model.length = kEnergyRodLength;
-  model.line_density = 0.3;
-  model.stiffness = Vec3(0.03, 0.05, 0.08);
-  model.rotational_inertia = parameter_value(p, "J_scale") * sh::elliptic_section_inertia(model.line_density, 0.1, 0.06);
-  model.natural_strain = Vec3(0.5, 0.0, 1.2) / model.length;
-  model.root_frame = tilted_frame(0.7);
-  model.gravity = parameter_value(p, "g") * Vec3(0.2, -0.3, -1.0).normalized();
-  return model;
+  return superhelix_cases::energy_release_model(element_count(parameter_value(p, "N")), parameter_value(p, "g"),
+                                                parameter_value(p, "J_scale"));
 }
 
 LevelOutput run_energy(const Parameters& p, double dt) {
@@ -708,6 +700,19 @@ LevelOutput run_accelerated_root(const Parameters& p, double level) {
 }
 
 }  // namespace
+
+sh::RodModel superhelix_cases::energy_release_model(std::size_t elements, double g, double J_scale) {
+  sh::RodModel model;
+  model.elements = elements;
+  model.length = kEnergyReleaseLength;
+  model.line_density = 0.3;
+  model.stiffness = Vec3(0.03, 0.05, 0.08);
+  model.rotational_inertia = J_scale * sh::elliptic_section_inertia(model.line_density, 0.1, 0.06);
+  model.natural_strain = Vec3(0.5, 0.0, 1.2) / model.length;
+  model.root_frame = cases::tilted_frame(0.7);
+  model.gravity = g * Vec3(0.2, -0.3, -1.0).normalized();
+  return model;
+}
 
 void register_superhelix_cases(Registry& registry) {
   // Round-off bound for the exact cases: N chained closed-form elements, each a few eps of L, plus

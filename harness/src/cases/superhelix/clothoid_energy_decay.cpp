@@ -26,24 +26,11 @@ namespace {
 namespace sh = solvers::superhelix;
 using namespace cases;
 
-constexpr double kLength = 0.7;
-
-sh::RodModel clothoid_model(const Parameters& p) {
-  sh::RodModel model;
-  model.elements = 4;
-  model.length = kLength;
-  model.line_density = 0.3;
-  model.stiffness = Vec3(0.03, 0.05, 0.08);
-  model.rotational_inertia = sh::elliptic_section_inertia(model.line_density, 0.1, 0.06);
-  model.natural_strain = Vec3(0.5, 0.0, 1.2) / model.length;
-  model.root_frame = tilted_frame(0.7);
-  model.gravity = parameter_value(p, "g") * Vec3(0.2, -0.3, -1.0).normalized();
-  return model;
-}
+constexpr double kLength = kEnergyReleaseLength;
 
 LevelOutput run(const Parameters& p, double dt) {
   const double t_end = parameter_value(p, "t_end");
-  const sh::RodModel model = clothoid_model(p);
+  const sh::RodModel model = energy_release_model(4, parameter_value(p, "g"), 1.0);
   const auto steps = static_cast<std::size_t>(std::llround(t_end / dt));
   const auto dofs = static_cast<Eigen::Index>(sh::clothoid_dof_count(model));
   sh::DynamicState state{sh::clothoid_natural_strain_vector(model), VecX::Zero(dofs), 0.0};

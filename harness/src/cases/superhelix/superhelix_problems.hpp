@@ -1,12 +1,22 @@
 #pragma once
 // The Super-Helix cases kept one problem per file (this folder); the older ones live in
 // ../superhelix_cases.cpp, which registers these too.
+#include <cstddef>
+
 #include "rodvv/harness/registry.hpp"
+#include "rodvv/solvers/superhelix/model.hpp"
 
 namespace rodvv::harness::superhelix_cases {
 
 // The method description every Super-Helix case carries.
 extern const char* const kMethod;
+
+// The release of superhelix/energy-decay and superhelix/clothoid-energy-decay: a twisted, curved cantilever
+// (L = 0.7, rho S = 0.3, (GJ, EI1, EI2) = (0.03, 0.05, 0.08), natural strains (0.5, 0, 1.2)/L, a solid elliptic
+// section of semi-axes 0.1 and 0.06 whose rotational inertia is scaled by J_scale), clamped in a tilted frame,
+// under gravity g along a direction in none of its planes.
+inline constexpr double kEnergyReleaseLength = 0.7;
+solvers::superhelix::RodModel energy_release_model(std::size_t elements, double g, double J_scale);
 
 void add_bathe_bolourchi(Registry& registry);    // 45-degree bend, out-of-plane tip load
 void add_lateral_torsional(Registry& registry);  // lateral-torsional buckling of a cantilever
