@@ -579,9 +579,9 @@ LevelOutput run_energy(const Parameters& p, double dt) {
   for (std::size_t e = 0; e < model.elements; ++e) state.qdot.segment<3>(static_cast<Eigen::Index>(3 * e)) = Vec3(1.5, 1.0, -0.7);
   const VecX stiffness = sh::generalised_stiffness(model);
   const double e0 = sh::total_energy(model, state);
-  double energy = e0, worst_increase = 0.0, worst_residual = 0.0, worst_forward = 0.0, scale = std::abs(e0);
+  superhelix_cases::EnergyLedger ledger(e0);
+  double worst_residual = 0.0, worst_forward = 0.0;
   double rotational_share = 0.0;
-  std::vector<double> t{0.0}, loss{0.0};
   for (std::size_t i = 0; i < steps; ++i) {
     const VecX dense = sh::velocity_change(model, state, dt, sh::DynamicsPath::Dense);
     const VecX fast = sh::velocity_change(model, state, dt, sh::DynamicsPath::Recursive);
@@ -599,21 +599,14 @@ LevelOutput run_energy(const Parameters& p, double dt) {
       rotational_share = std::max(rotational_share, sh::rotational_kinetic_energy(model, kinematics, state.qdot) / kinetic);
     // The step itself is the production step (its recursive dv is `fast` again, recomputed).
     state = sh::step(model, state, dt, sh::DynamicsPath::Recursive);
-    const double next = sh::total_energy(model, state);
-    scale = std::max(scale, std::abs(next));
-    worst_increase = std::max(worst_increase, next - energy);
-    energy = next;
-    t.push_back(state.time);
-    loss.push_back(e0 - energy);
+    ledger.record(state.time, sh::total_energy(model, state));
   }
   LevelOutput output;
   // The exact flow conserves E: the loss E(0) - E(t_end) is the error, O(h) for this scheme.
-  output.metrics["energy_loss"] = value_sample((e0 - energy) / scale, 1.0);
-  output.metrics["max_energy_increase"] = diagnostic(worst_increase / scale);
+  ledger.add_to(output);
   output.metrics["dense_vs_recursive"] = value_sample(worst_residual);
   output.metrics["dense_vs_recursive_forward"] = diagnostic(worst_forward);
   output.metrics["rotational_kinetic_share"] = diagnostic(rotational_share);
-  output.series.push_back(thin_series("energy loss E(0) - E(t)", "t", "E(0) - E(t)", t, loss));
   return output;
 }
 
@@ -712,6 +705,20 @@ sh::RodModel superhelix_cases::energy_release_model(std::size_t elements, double
   model.root_frame = cases::tilted_frame(0.7);
   model.gravity = g * Vec3(0.2, -0.3, -1.0).normalized();
   return model;
+}
+
+void superhelix_cases::EnergyLedger::record(double time, double energy) {
+  scale_ = std::max(scale_, std::abs(energy));
+  worst_increase_ = std::max(worst_increase_, energy - energy_);
+  energy_ = energy;
+  t_.push_back(time);
+  loss_.push_back(e0_ - energy_);
+}
+
+void superhelix_cases::EnergyLedger::add_to(LevelOutput& output) const {
+  output.metrics["energy_loss"] = cases::value_sample((e0_ - energy_) / scale_, 1.0);
+  output.metrics["max_energy_increase"] = cases::diagnostic(worst_increase_ / scale_);
+  output.series.push_back(thin_series("energy loss E(0) - E(t)", "t", "E(0) - E(t)", t_, loss_));
 }
 
 void register_superhelix_cases(Registry& registry) {

@@ -2,7 +2,9 @@
 // The Super-Helix cases kept one problem per file (this folder); the older ones live in
 // ../superhelix_cases.cpp, which registers these too.
 #include <cstddef>
+#include <vector>
 
+#include "rodvv/harness/case.hpp"
 #include "rodvv/harness/registry.hpp"
 #include "rodvv/solvers/superhelix/model.hpp"
 
@@ -17,6 +19,19 @@ extern const char* const kMethod;
 // under gravity g along a direction in none of its planes.
 inline constexpr double kEnergyReleaseLength = 0.7;
 solvers::superhelix::RodModel energy_release_model(std::size_t elements, double g, double J_scale);
+
+// The energy bookkeeping of both energy cases: E after each step; energy_loss = (E(0) - E(t_end)) / |E|max,
+// max_energy_increase (per step, same size) and the loss series E(0) - E(t).
+class EnergyLedger {
+ public:
+  explicit EnergyLedger(double e0) : e0_(e0), energy_(e0), scale_(e0 < 0.0 ? -e0 : e0) {}
+  void record(double time, double energy);
+  void add_to(LevelOutput& output) const;
+
+ private:
+  double e0_, energy_, scale_, worst_increase_ = 0.0;
+  std::vector<double> t_{0.0}, loss_{0.0};
+};
 
 void add_bathe_bolourchi(Registry& registry);    // 45-degree bend, out-of-plane tip load
 void add_lateral_torsional(Registry& registry);  // lateral-torsional buckling of a cantilever
