@@ -386,7 +386,7 @@ void add_edges(const Context& c, VecX& r, Triplets* jac) {
 // The self-contact barrier (self_contact.hpp) on the evaluated positions: residual += dE/dx, Jacobian +=
 // its Hessian, mapped from vertex coordinates to the DofLayout.
 void add_self_contact(const Context& c, VecX& r, Triplets* jac) {
-  if (!has_self_contact(c.model)) return;
+  if (!has_self_contact(c.model) || is_hard(c.model.self_contact)) return;  // hard: forces are unknowns (statics)
   std::vector<Vec3> gradient;
   Triplets hessian;
   self_contact_derivatives(c.model.self_contact, c.state.position, c.ell, gradient, jac ? &hessian : nullptr);

@@ -177,6 +177,9 @@ double twist_change(const StepContext& c, const VecX& y) {
 
 void validate_step(const RodModel& model, double h, const DynamicOptions& options) {
   validate(model);
+  if (has_self_contact(model) && is_hard(model.self_contact))
+    throw InputError("self_contact.law", "invalid parameter 'self_contact.law': the dynamics takes the barrier law "
+                                         "only (hard self-contact is solved by the statics)");
   require_positive("h", h);
   require_at_least("max_iterations", options.max_iterations, 1);
   require_open_interval("tolerance", options.tolerance, 0.0, 1.0);

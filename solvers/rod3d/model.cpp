@@ -66,7 +66,14 @@ void validate(const RodModel& model) {
   validate_end("tip", model.tip);
   if (has_self_contact(model)) {
     require_positive("self_contact.radius", model.self_contact.radius);
-    require_positive("self_contact.stiffness", model.self_contact.stiffness);
+    if (is_hard(model.self_contact)) {
+      if (model.self_contact.stiffness != 0.0)
+        throw InputError("self_contact.stiffness", "invalid parameter 'self_contact.stiffness' = " +
+                                                       format_value(model.self_contact.stiffness) +
+                                                       ": must be 0 with the hard contact law (it has no barrier)");
+    } else {
+      require_positive("self_contact.stiffness", model.self_contact.stiffness);
+    }
     // Segments within pi h of each other along the rod never count (self_contact.hpp): at least one
     // pair must remain.
     const std::size_t excluded = contact_excluded_neighbours(model.self_contact.radius, rest_edge_length(model));

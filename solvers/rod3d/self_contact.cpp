@@ -23,7 +23,13 @@ using PairJet = taylor2::Jet<kPairDofs, 2>;
 
 void validate(const SelfContact& contact, double edge_length) {
   require_positive("radius", contact.radius);
-  require_positive("stiffness", contact.stiffness);
+  if (is_hard(contact)) {
+    if (contact.stiffness != 0.0)
+      throw InputError("stiffness", "invalid parameter 'stiffness' = " + format_value(contact.stiffness) +
+                                        ": must be 0 with the hard contact law (it has no barrier)");
+  } else {
+    require_positive("stiffness", contact.stiffness);
+  }
   require_positive("edge_length", edge_length);
 }
 
@@ -59,9 +65,9 @@ PairJet distance_jet(const std::array<Vec3, 4>& ends, const contact::SegmentClos
   return sqrt(dot(gap, gap));
 }
 
-std::vector<ContactPair> find_contacts(const SelfContact& contact, const std::vector<Vec3>& x, double edge_length) {
+std::vector<ContactPair> find_contacts(const SelfContact& contact, const std::vector<Vec3>& x, double edge_length,
+                                       double reach) {
   validate(contact, edge_length);
-  const double reach = 2.0 * contact.radius;
   std::vector<ContactPair> pairs;
   for (const auto& near : contact::segments_within(x, reach, contact_excluded_neighbours(contact.radius, edge_length))) {
     const auto& cp = near.closest;
@@ -77,7 +83,7 @@ std::vector<ContactPair> find_contacts(const SelfContact& contact, const std::ve
     pair.t = cp.t;
     pair.distance = cp.distance;
     pair.normal = (cp.p - cp.q) / cp.distance;
-    pair.force = barrier(contact).force(cp.distance);
+    pair.force = is_hard(contact) ? 0.0 : barrier(contact).force(cp.distance);
     pairs.push_back(pair);
   }
   return pairs;
@@ -92,22 +98,58 @@ std::size_t contact_excluded_neighbours(double radius, double edge_length) {
 }
 
 std::vector<ContactPair> self_contacts(const SelfContact& contact, const std::vector<Vec3>& x, double edge_length) {
-  return find_contacts(contact, x, edge_length);
+  return find_contacts(contact, x, edge_length, 2.0 * contact.radius);
 }
 
-double contact_pair_energy(const SelfContact& contact, double distance) { return barrier(contact).energy(distance); }
+std::vector<ContactPair> contact_candidates(const SelfContact& contact, const std::vector<Vec3>& x,
+                                            double edge_length, double reach) {
+  if (!(reach >= 2.0 * contact.radius) || !std::isfinite(reach))
+    throw InputError("reach", "invalid parameter 'reach' = " + format_value(reach) +
+                                  ": must be finite and at least the contact distance 2h = " +
+                                  format_value(2.0 * contact.radius));
+  return find_contacts(contact, x, edge_length, reach);
+}
+
+std::array<Vec3, 4> distance_gradient(const ContactPair& pair) {
+  const Vec3& n = pair.normal;
+  return {(1.0 - pair.s) * n, pair.s * n, -(1.0 - pair.t) * n, -pair.t * n};
+}
+
+void contact_force_hessian(const std::vector<Vec3>& x, const std::vector<ContactPair>& pairs,
+                           std::vector<Eigen::Triplet<double>>& hessian) {
+  for (const auto& pair : pairs) {
+    if (pair.force == 0.0) continue;
+    const std::array<std::size_t, 4> vertex{pair.first, pair.first + 1, pair.second, pair.second + 1};
+    contact::SegmentClosestPoints closest;
+    closest.s = pair.s;
+    closest.t = pair.t;
+    const PairJet d = distance_jet({x[vertex[0]], x[vertex[1]], x[vertex[2]], x[vertex[3]]}, closest);
+    for (int a = 0; a < kPairDofs; ++a)
+      for (int b = 0; b < kPairDofs; ++b) {
+        const double value = -pair.force * d.hessian(a, b);
+        if (value != 0.0)
+          hessian.emplace_back(int(3 * vertex[a / 3] + a % 3), int(3 * vertex[b / 3] + b % 3), value);
+      }
+  }
+}
+
+double contact_pair_energy(const SelfContact& contact, double distance) {
+  return is_hard(contact) ? 0.0 : barrier(contact).energy(distance);
+}
 
 double self_contact_energy(const SelfContact& contact, const std::vector<Vec3>& x, double edge_length) {
+  if (is_hard(contact)) return 0.0;
   double energy = 0.0;
-  for (const auto& pair : find_contacts(contact, x, edge_length)) energy += contact_pair_energy(contact, pair.distance);
+  for (const auto& pair : self_contacts(contact, x, edge_length)) energy += contact_pair_energy(contact, pair.distance);
   return energy;
 }
 
 void self_contact_derivatives(const SelfContact& contact, const std::vector<Vec3>& x, double edge_length,
                               std::vector<Vec3>& gradient, std::vector<Eigen::Triplet<double>>* hessian) {
   gradient.assign(x.size(), Vec3::Zero());
+  if (is_hard(contact)) return;  // no energy: the forces are the statics' unknowns
   const contact::CubicBarrier law = barrier(contact);
-  for (const auto& pair : find_contacts(contact, x, edge_length)) {
+  for (const auto& pair : self_contacts(contact, x, edge_length)) {
     const std::array<std::size_t, 4> vertex{pair.first, pair.first + 1, pair.second, pair.second + 1};
     const std::array<Vec3, 4> ends{x[vertex[0]], x[vertex[1]], x[vertex[2]], x[vertex[3]]};
     contact::SegmentClosestPoints closest;

@@ -16,13 +16,16 @@
 #include "rodvv/common/validation.hpp"
 #include "rodvv/solvers/elastica2d/banded_lu.hpp"
 #include "rodvv/solvers/rod3d/discrete_energy.hpp"
+#include "hard_contact_step.hpp"
 
 namespace rodvv::solvers::rod3d {
 
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-const std::string kMethod = "rod3d statics (Newton, banded LU or sparse LU with self-contact, continuation)";
+const std::string kMethod =
+    "rod3d statics (Newton, banded LU or sparse LU with a self-contact barrier, Newton-LCP with hard self-contact, "
+    "continuation)";
 
 // Where one supported end goes during continuation: from the initial state's pose (lambda = 0) to
 // the model's (lambda = 1).
@@ -179,20 +182,43 @@ double scaled_measure(const RodModel& model, const VecX& r, const Scales& scales
 struct Trial {
   RodState state;
   double measure = 0.0;
+  std::vector<ContactPair> contacts;  // hard contact: the candidates there, with the step's pair forces
 };
+
+bool hard_contact(const RodModel& model) { return has_self_contact(model) && is_hard(model.self_contact); }
+
+// The scaled measure of the residual r (held rows zero) - with hard contact, of r less the pair forces
+// `contacts` and of their complementarity with the gaps (hard_contact_step.hpp).
+double equilibrium_measure(const RodModel& model, const RodState& state, double lambda, VecX r,
+                           const std::vector<ContactPair>* contacts, const std::vector<char>& held) {
+  const Scales scales = residual_scales(model, state, lambda);
+  if (!contacts) return scaled_measure(model, r, scales, held);
+  detail::subtract_contact_forces(model, *contacts, r);
+  zero_held(held, r);
+  return std::max(scaled_measure(model, r, scales, held),
+                  detail::complementarity_measure(model, *contacts, scales.force, scales.length));
+}
+
 std::optional<Trial> try_step(const RodModel& model, const RodState& state, const VecX& dz, double lambda,
-                              const std::vector<char>& held) {
+                              const std::vector<char>& held, const std::vector<ContactPair>* forces = nullptr) {
   double twist_change = 0.0;
-  Trial trial{displaced(model, state, dz, &twist_change)};
+  Trial trial{displaced(model, state, dz, &twist_change), 0.0, {}};
   if (twist_change > 0.25 * std::numbers::pi) return std::nullopt;
   VecX r;
   try {
     r = static_residual(model, trial.state, lambda);
+    if (forces) {
+      trial.contacts = detail::candidates_with_forces(model, trial.state, *forces);
+      // Hard contact holds the linearised gaps: a pair more than half the contact distance inside
+      // (a segment pushed through another) is a step too long for the linearisation, not a state.
+      for (const auto& pair : trial.contacts)
+        if (pair.distance < model.self_contact.radius) return std::nullopt;
+    }
   } catch (const SolverError&) {
     return std::nullopt;
   }
   zero_held(held, r);
-  trial.measure = scaled_measure(model, r, residual_scales(model, trial.state, lambda), held);
+  trial.measure = equilibrium_measure(model, trial.state, lambda, std::move(r), forces ? &trial.contacts : nullptr, held);
   if (!std::isfinite(trial.measure)) return std::nullopt;
   return trial;
 }
@@ -224,6 +250,13 @@ double round_off_floor(const RodModel& model, const RodState& state, double forc
 constexpr double kMinPseudoTime = 1e-6;
 constexpr double kMaxPseudoTime = 1e6;
 
+// The hard contacts' augmentation rho (hard_contact_step.hpp) in units of the force scale per radius h.
+// Measured on the open trefoil (knot/trefoil-nodal's knot, pseudo-transient from the tied curve): 10: 425
+// iterations at N = 50, and at N = 100 the iteration stalls (W indefinite whenever tau grows); 100: 397,
+// 411 and 2930 iterations at N = 50, 100, 200. A barrier of stiffness k at the contact
+// force F is 2 sqrt(k F) stiff, 100 F / h at the barrier k = 2500 F / h^2 (knot/trefoil-nodal: 500 T / h^2).
+constexpr double kContactAugmentation = 100.0;
+
 // Adds D / tau to the free position and angle rows of the Jacobian: the "mass" of a gradient flow
 // whose unit pseudo-time relaxes a mode of the rod's global stiffness (force scale / L per unit
 // displacement, force scale x L per radian) by a factor e.
@@ -242,6 +275,7 @@ struct NewtonOutcome {
   bool converged = false;
   std::size_t iterations = 0;
   double residual = std::numeric_limits<double>::infinity();
+  std::vector<ContactPair> contacts;  // hard contact: the candidate pairs and their forces
 };
 
 // Newton at a fixed load factor with the held dofs already in place. Each iteration linearises in
@@ -251,7 +285,7 @@ struct NewtonOutcome {
 // was tried: with a twisting moment held at a free end the equilibrium must then be re-found after
 // every re-basing, which cost 20 to 200 times more iterations on the helix case.)
 NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, const StaticOptions& options,
-                     const std::vector<char>& held) {
+                     const std::vector<char>& held, std::vector<ContactPair> contacts) {
   NewtonOutcome outcome;
   VecX r;
   Eigen::SparseMatrix<double> jacobian;
@@ -260,11 +294,13 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
   elastica2d::BandedLU banded;
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> sparse;
   const bool contact = has_self_contact(model);
+  const bool hard = hard_contact(model);  // forces by complementarity (hard_contact_step.hpp)
+  const bool sparse_jacobian = contact;  // the barrier's or the hard contacts' stiffness couples distant vertices
   // The symbolic analysis (COLAMD ordering, elimination tree) is redone only when the sparsity
   // pattern changes - when a contact pair appears or goes - not at every iteration.
   std::vector<int> pattern_outer, pattern_inner;
   const auto factorize = [&](Eigen::SparseMatrix<double>& a) {
-    if (!contact) return banded.factorize(a);
+    if (!sparse_jacobian) return banded.factorize(a);
     a.makeCompressed();
     const Eigen::Index columns = a.cols(), entries = a.nonZeros();
     const bool same = std::equal(a.outerIndexPtr(), a.outerIndexPtr() + columns + 1, pattern_outer.begin(),
@@ -279,24 +315,37 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
     sparse.factorize(a);
     return sparse.info() == Eigen::Success;
   };
-  const auto solve = [&](const VecX& b) -> VecX { return contact ? VecX(sparse.solve(b)) : VecX(banded.solve(b)); };
+  const auto solve = [&](const VecX& b) -> VecX {
+    return sparse_jacobian ? VecX(sparse.solve(b)) : VecX(banded.solve(b));
+  };
   const bool pseudo_transient = options.pseudo_transient;
   double pseudo_time = options.initial_pseudo_time;
   for (std::size_t it = 0; it < options.max_iterations; ++it) {
     static_system(model, state, lambda, r, jacobian);
     zero_held(held, r);
     const Scales scales = residual_scales(model, state, lambda);
-    outcome.residual = scaled_measure(model, r, scales, held);
+    if (hard) {
+      try {
+        contacts = detail::candidates_with_forces(model, state, contacts);
+      } catch (const SolverError&) {  // two segments intersect
+        return outcome;
+      }
+    }
+    outcome.residual = equilibrium_measure(model, state, lambda, r, hard ? &contacts : nullptr, held);
     check_time_budget(kMethod, outcome.iterations, outcome.residual);
     if (!std::isfinite(outcome.residual)) return outcome;
     if (outcome.residual <= options.tolerance) {
       outcome.converged = true;
+      outcome.contacts = std::move(contacts);
       return outcome;
     }
     // At the round-off floor the residual cannot show further progress, but the iterate may still
     // carry the error of the last step (up to floor / stiffness): one more full Newton step, taken
     // without the line search, squares that error away (kept if the residual stays at the floor).
     const bool at_floor = outcome.residual <= round_off_floor(model, state, scales.force);
+    if (hard)
+      detail::add_contact_stiffness(model, state, contacts, kContactAugmentation * scales.force / model.self_contact.radius,
+                                    jacobian);
     jacobian.prune([&](Eigen::Index row, Eigen::Index, double) { return !held[std::size_t(row)]; });
     if (pseudo_transient) add_pseudo_time(model, scales, held, 1.0 / pseudo_time, jacobian);
     // Solved in the problem's own units: rows over their residual scale (forces, moments, lengths),
@@ -308,7 +357,33 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
     for (std::size_t k = 0; k < held.size(); ++k)
       if (held[k]) jacobian.coeffRef(Eigen::Index(k), Eigen::Index(k)) = 1.0;
     if (!factorize(jacobian)) return outcome;
-    VecX dz = column_scale.cwiseProduct(solve(-r.cwiseQuotient(row_scale)));
+    const auto solve_in_units = [&](const VecX& b) -> VecX {
+      return column_scale.cwiseProduct(solve(b.cwiseQuotient(row_scale)));
+    };
+    VecX dz;
+    std::vector<ContactPair> step_forces;  // hard contact: the pair forces this step solves for
+    if (hard) {
+      std::optional<detail::HardContactStep> step;
+      try {
+        step = detail::hard_contact_step(model, contacts, held, r, solve_in_units);
+      } catch (const InputError&) {  // W refused (a negative diagonal: not positive semidefinite)
+      } catch (const SolverError&) {  // no solution (an unstable linearisation)
+      }
+      if (step) {
+        dz = std::move(step->dz);
+        step_forces = std::move(step->pairs);
+      } else {
+        // A failed step. Under pseudo-transient continuation a shorter pseudo-time step adds mass,
+        // which makes W positive definite.
+        if (!pseudo_transient) return outcome;
+        pseudo_time *= 0.25;
+        if (pseudo_time < kMinPseudoTime) return outcome;
+        ++outcome.iterations;
+        continue;
+      }
+    } else {
+      dz = solve_in_units(-r);
+    }
     if (!dz.allFinite()) return outcome;
     bool capped = false;
     double cap_ratio = 1.0;  // the capped step's length over the Newton step's
@@ -333,13 +408,23 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
       // a step on round-off noise can run along the soft mode (the lateral-torsional cantilever at
       // 0.999 P_cr: 1.2e-12 -> 1.5e-8).
       const double floor = round_off_floor(model, state, scales.force);
-      if (auto trial = try_step(model, state, dz, lambda, held); trial && trial->measure <= floor) {
+      if (auto trial = try_step(model, state, dz, lambda, held, hard ? &step_forces : nullptr);
+          trial && trial->measure <= floor) {
         state = std::move(trial->state);
         outcome.residual = trial->measure;
+        contacts = std::move(trial->contacts);
       }
       outcome.converged = true;
+      outcome.contacts = std::move(contacts);
       return outcome;
     }
+    // What a step is measured against: the residual here, and with hard contact also the residual here
+    // under the step's own pair forces. Those forces are part of the iterate and change discontinuously
+    // (a pair that a short step cannot close gets no force), so the residual under the previous forces
+    // is no yardstick for a step with new ones: without this, a rejected step shortened tau, the shorter
+    // step changed the forces again, and tau fell to its floor.
+    const double yardstick =
+        hard ? std::max(outcome.residual, equilibrium_measure(model, state, lambda, r, &step_forces, held)) : outcome.residual;
     if (pseudo_transient) {
       // Pseudo-transient continuation (Kelley & Keyes 1998): the step is taken whole if it keeps the
       // residual finite, within 10 x its value (far from equilibrium the residual need not fall at
@@ -347,8 +432,8 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
       // shortened by the h/2 limit, tau grows by r_old / r_new (switched evolution relaxation),
       // clamped to [1.2, 10]: at least 1.2, so that tau still grows when only a slow mode (a knot
       // sliding along its tails) is left. A step that fails is retried with a quarter of tau.
-      auto trial = try_step(model, state, dz, lambda, held);
-      if (trial && trial->measure <= 10.0 * outcome.residual) {
+      auto trial = try_step(model, state, dz, lambda, held, hard ? &step_forces : nullptr);
+      if (trial && trial->measure <= 10.0 * yardstick) {
         const bool progress = !capped && trial->measure < outcome.residual;
         // A capped step is not the pseudo-time step tau asked for but a fraction of it: tau shrinks by
         // that fraction (at most 10x per step), so that the next step is about as long as the cap allows
@@ -357,6 +442,7 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
         const double growth =
             progress ? std::clamp(outcome.residual / trial->measure, 1.2, 10.0) : (capped ? std::max(0.1, cap_ratio) : 1.0);
         state = std::move(trial->state);
+        if (hard) contacts = std::move(step_forces);
         pseudo_time = std::min(kMaxPseudoTime, pseudo_time * growth);
       } else {
         pseudo_time *= 0.25;
@@ -368,9 +454,10 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
     double alpha = 1.0;
     bool accepted = false;
     for (int halving = 0; halving < 30; ++halving, alpha *= 0.5) {
-      auto trial = try_step(model, state, alpha * dz, lambda, held);  // nothing: a shorter step
-      if (trial && trial->measure <= (1.0 - 1e-4 * alpha) * outcome.residual) {
+      auto trial = try_step(model, state, alpha * dz, lambda, held, hard ? &step_forces : nullptr);  // nothing: shorter
+      if (trial && trial->measure <= (1.0 - 1e-4 * alpha) * yardstick) {
         state = std::move(trial->state);
+        if (hard) contacts = step_forces;
         accepted = true;
         break;
       }
@@ -448,11 +535,12 @@ StaticResult solve_static(const RodModel& model, const RodState& initial, const 
     const double target = std::min(1.0, lambda + step);
     RodState trial = result.state;
     place_ends(model, trial, root, tip, target);
-    const NewtonOutcome outcome = newton(model, trial, target, options, held);
+    NewtonOutcome outcome = newton(model, trial, target, options, held, result.contacts);
     result.iterations += outcome.iterations;
     last_residual = outcome.residual;
     if (outcome.converged) {
       result.state = std::move(trial);
+      result.contacts = std::move(outcome.contacts);
       lambda = target;
       ++result.steps;
       halvings = 0;
@@ -467,6 +555,13 @@ StaticResult solve_static(const RodModel& model, const RodState& initial, const 
     step *= 0.5;
   }
   result.residual = last_residual;
+  if (has_self_contact(model)) {
+    if (hard_contact(model)) {  // the pairs that carry a force
+      std::erase_if(result.contacts, [](const ContactPair& pair) { return pair.force == 0.0; });
+    } else {
+      result.contacts = self_contacts(model.self_contact, result.state.position, rest_edge_length(model));
+    }
+  }
   return result;
 }
 

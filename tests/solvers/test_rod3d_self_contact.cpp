@@ -160,6 +160,7 @@ TEST(Rod3dSelfContact, ExcludedNeighboursAndBadInput) {
 #include "rodvv/invariants/noether3d.hpp"
 #include "rodvv/solvers/rod3d/solution.hpp"
 #include "rodvv/solvers/rod3d/discrete_energy.hpp"
+#include "rodvv/solvers/rod3d/dynamics.hpp"
 #include "rodvv/solvers/rod3d/statics.hpp"
 #include "rodvv/solvers/rod3d/state.hpp"
 
@@ -233,6 +234,93 @@ TEST(Rod3dSelfContact, RacketEquilibriumKeepsHThroughTheContact) {
               << ", largest pair force " << force << ", H spread / scale " << summary.spread / summary.scale
               << ", iterations " << result.iterations << " in " << result.steps << " steps\n";
   }
+}
+
+}  // namespace
+
+namespace {
+
+// The racket with hard contact (self_contact.hpp: law Hard; statics.hpp: Newton-LCP): the constraint
+// d >= 2h itself. A polyline's tube has creases at the vertices, so a strand sliding along another
+// meets equilibria O(ebar^2) apart and the hard problem has several; each barrier equilibrium is
+// therefore hardened (the hard statics started from it), and checked:
+//  - the barrier's equilibria tend to their hardened ones (here one and the same: 2 pairs carry 598.67)
+//    as k -> infinity. Not like the overlap: in the neck the strands are nearly parallel, the barrier
+//    spreads the load over a patch of half-width a = sqrt(2 rho delta) (7 to 15 pairs) where the hard
+//    contact puts it on 2 pairs, and the shapes differ by that spread, ~ a ~ k^(-1/5) (a line force
+//    k delta^2 over the patch carries F ~ k delta^(5/2): knot/trefoil-barrier-limit's comment). So each
+//    decade of k multiplies the largest vertex distance by about 10^(-1/5) = 0.63: measured 0.52, 0.60
+//    (0.37 h, 0.19 h, 0.11 h at k = 1e6, 1e7, 1e8); bound 0.7 per decade;
+//  - the KKT conditions recomputed here from the returned pairs: every force > 0, every pair at the
+//    contact distance to the solver's tolerance, and the elastic residual balanced by the pair forces
+//    along their normals (static_residual = sum f grad d on the free vertices);
+//  - H is as constant through the neck as with the barrier.
+TEST(Rod3dSelfContact, HardContactIsTheBarriersLimit) {
+  rod::StaticOptions options;
+  options.load_steps = 8;
+  double previous = 1e300;
+  for (double k : {1e6, 1e7, 1e8}) {
+    const Racket soft = racket(100, k);
+    const auto barrier = rod::solve_static(soft.model, soft.start, options);
+    rod::RodModel model = soft.model;
+    model.self_contact = {model.self_contact.radius, 0.0, rod::ContactLaw::Hard};
+    const auto hard = rod::solve_static(model, barrier.state);
+    ASSERT_FALSE(hard.contacts.empty()) << k;
+    const double h = model.self_contact.radius;
+    double distance = 0.0;
+    for (std::size_t i = 0; i <= model.elements; ++i)
+      distance = std::max(distance, (barrier.state.position[i] - hard.state.position[i]).norm());
+    EXPECT_LT(distance, 0.7 * previous) << k;
+    previous = distance;
+
+    const double length_tolerance = 2 * options.tolerance * model.length;  // the constraint rows' scale (statics.hpp)
+    std::vector<Vec3> contact_force(model.elements + 1, Vec3::Zero());
+    double total = 0.0;
+    for (const auto& pair : hard.contacts) {
+      EXPECT_GT(pair.force, 0.0);
+      EXPECT_NEAR(pair.distance, 2 * h, length_tolerance) << pair.first << ", " << pair.second;
+      const auto gradient = rod::distance_gradient(pair);
+      const std::size_t vertex[4] = {pair.first, pair.first + 1, pair.second, pair.second + 1};
+      for (int a = 0; a < 4; ++a) contact_force[vertex[a]] += pair.force * gradient[a];
+      total += pair.force;
+    }
+    // Balance on the free vertices (the clamps hold vertices 0, 1, N - 1, N), in the statics' force scale.
+    const rod::DofLayout layout(model);
+    const auto residual = rod::static_residual(model, hard.state, 1.0);
+    double force_scale = model.stiffness.maxCoeff() / (model.length * model.length);
+    for (double tension : hard.state.multiplier) force_scale = std::max(force_scale, std::abs(tension));
+    double imbalance = 0.0;
+    for (std::size_t i = 2; i + 2 <= model.elements; ++i)
+      imbalance = std::max(imbalance, (residual.segment<3>(Eigen::Index(layout.vertex(i))) - contact_force[i]).norm());
+    EXPECT_LE(imbalance, options.tolerance * force_scale) << k;
+    const auto summary = rodvv::invariants::noether3d_summary(rod::make_solution(model, hard.state));
+    EXPECT_LE(summary.spread, 2 * 1.83e-2 * summary.scale) << k;
+    std::cout << "[ summary  ] k " << k << ": largest vertex distance to its hardened equilibrium / h " << distance / h
+              << "; hard: " << hard.contacts.size() << " pairs, total force " << total << ", imbalance "
+              << imbalance / force_scale << ", H spread / scale " << summary.spread / summary.scale << ", "
+              << hard.iterations << " iterations\n";
+  }
+}
+
+TEST(Rod3dSelfContact, HardContactBadInput) {
+  const auto parameter_of = [](const rod::RodModel& m) {
+    try {
+      rod::validate(m);
+    } catch (const rodvv::InputError& e) {
+      return e.parameter();
+    }
+    return std::string("none");
+  };
+  Racket r = racket(40, 0.0);
+  r.model.self_contact = {0.02, 0.0, rod::ContactLaw::Hard};
+  EXPECT_EQ(parameter_of(r.model), "none");
+  r.model.self_contact.stiffness = 1e6;  // a barrier stiffness with the hard law: refused, not ignored
+  EXPECT_EQ(parameter_of(r.model), "self_contact.stiffness");
+  // The hard law has no energy: nothing for the dynamics to integrate.
+  r.model.self_contact.stiffness = 0.0;
+  const auto state = rod::make_dynamic_state(r.model, r.start, {});
+  EXPECT_THROW(rod::step(r.model, state, 1e-3, rod::TimeIntegrator::ImplicitEuler), rodvv::InputError);
+  EXPECT_EQ(rod::self_contact_energy(r.model.self_contact, r.start.position, rod::rest_edge_length(r.model)), 0.0);
 }
 
 }  // namespace

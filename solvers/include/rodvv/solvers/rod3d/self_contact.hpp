@@ -21,6 +21,12 @@
 // neighbours along the rod are in contact only through the rod's own thickness.
 //
 // The broad phase is the sort-and-sweep of segment_proximity (O(N log N) for a rod).
+//
+// Hard contact (law = Hard): the constraint d >= 2h itself, with no barrier and no energy; the pair
+// forces are unknowns of the statics (statics.hpp: complementarity solved inside Newton), reported in
+// StaticResult::contacts. Here the hard law only changes what the geometry returns (pairs with force
+// 0) and makes the energy and its derivatives vanish. Statics only: the dynamics refuses it.
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -30,10 +36,15 @@
 
 namespace rodvv::solvers::rod3d {
 
+enum class ContactLaw { Barrier, Hard };
+
 struct SelfContact {
   double radius = 0.0;     // h > 0 (0: no self-contact)
-  double stiffness = 0.0;  // k > 0, force / length^2
+  double stiffness = 0.0;  // barrier: k > 0, force / length^2; hard: 0
+  ContactLaw law = ContactLaw::Barrier;
 };
+
+inline bool is_hard(const SelfContact& contact) { return contact.law == ContactLaw::Hard; }
 
 // m = max(1, ceil(pi h / ebar)) (see above).
 std::size_t contact_excluded_neighbours(double radius, double edge_length);
@@ -48,11 +59,27 @@ struct ContactPair {
 };
 
 // The pairs in contact at the vertex positions x (an open polyline of N + 1 vertices, edges of rest
-// length edge_length), sorted by (first, second). InputError: radius or stiffness not finite and > 0,
-// edge_length not > 0.
+// length edge_length), sorted by (first, second); hard law: the pairs closer than 2h, force 0 (the
+// forces are the statics' unknowns). InputError: radius not finite and > 0, stiffness not finite and
+// > 0 (barrier) or not 0 (hard), edge_length not > 0.
 std::vector<ContactPair> self_contacts(const SelfContact& contact, const std::vector<Vec3>& x, double edge_length);
 
-// phi(d) = (k/3) (2h - d)^3 for d < 2h, else 0: the barrier energy of one pair at distance d.
+// The pairs closer than `reach` (>= 2h): the candidates of the hard contact's linearised constraints.
+// Force as in self_contacts (barrier law: its force, 0 beyond 2h).
+std::vector<ContactPair> contact_candidates(const SelfContact& contact, const std::vector<Vec3>& x,
+                                            double edge_length, double reach);
+
+// d(distance)/d(a0, a1, b0, b1) of a pair at its closest points (the envelope theorem: the parameters'
+// motion does not change d to first order): (n (1 - s), n s, -n (1 - t), -n t), n = pair.normal.
+std::array<Vec3, 4> distance_gradient(const ContactPair& pair);
+
+// -sum_c f_c d^2 d_c / dx^2 over the pairs (f_c = pair.force, held fixed): the stiffness of given pair
+// forces as the pairs' geometry turns (the hard law's forces; with the barrier's forces it is the part
+// of its Hessian at fixed force). Triplets on the coordinate indices 3 i + c, as below.
+void contact_force_hessian(const std::vector<Vec3>& x, const std::vector<ContactPair>& pairs,
+                           std::vector<Eigen::Triplet<double>>& hessian);
+
+// phi(d) = (k/3) (2h - d)^3 for d < 2h, else 0: the barrier energy of one pair at distance d (0: hard law).
 double contact_pair_energy(const SelfContact& contact, double distance);
 
 // Sum of phi over the pairs in contact.

@@ -9,6 +9,14 @@
 // barrier's evaluations; a pseudo-transient step so capped shrinks the pseudo-time step by the cap
 // ratio), and a line-search trial in which two segments intersect is shortened.
 //
+// Hard self-contact (model.self_contact.law = Hard, self_contact.hpp): the forces are unknowns. Each
+// Newton (or pseudo-transient) step solves the linearised equilibrium with the linearised constraints
+// d_c >= 2h of every pair closer than 3h as an LCP (Lemke) for the step and the pair forces
+// (hard_contact_step.hpp); the Jacobian stays banded (the contacts couple the vertices only through the
+// LCP's Schur complement). Converged when the residual with the pair forces meets the test below and
+// the complementarity's natural map max |min(lambda / force scale, (d - 2h) / L)| does too. A step whose
+// LCP has no solution fails like a step whose factorisation does.
+//
 // Continuation: the loads (gravity, tip force, tip moment) are scaled by lambda, and the supported
 // ends are moved from where `initial` has them to where the model puts them (positions linearly, end
 // tangents by a rotation about their common normal, held material angles linearly, so an imposed
@@ -28,8 +36,10 @@
 // or a Newton step at round-off (|dz|_inf <= 64 eps L). Failure: rodvv::SolverError naming
 // "rod3d statics", the load factor reached, iterations and residual.
 #include <cstddef>
+#include <vector>
 
 #include "rodvv/solvers/rod3d/model.hpp"
+#include "rodvv/solvers/rod3d/self_contact.hpp"
 #include "rodvv/solvers/rod3d/state.hpp"
 
 namespace rodvv::solvers::rod3d {
@@ -51,6 +61,9 @@ struct StaticOptions {
 
 struct StaticResult {
   RodState state;
+  // With self-contact, the pairs carrying a force at the equilibrium: the barrier law's (self_contacts),
+  // or the hard law's, force = the complementarity's multiplier (below).
+  std::vector<ContactPair> contacts;
   std::size_t iterations = 0;  // Newton iterations, all steps
   std::size_t steps = 0;       // continuation steps taken (accepted)
   double residual = 0.0;       // final scaled residual (max over rows)
