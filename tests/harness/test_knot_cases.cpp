@@ -9,6 +9,7 @@
 #include <string>
 
 #include "../../harness/src/cases/knot/contact_profile.hpp"
+#include "../../harness/src/cases/knot/nodal_trefoil.hpp"
 #include "../../harness/src/cases/knot/plectoneme_tying.hpp"
 #include "../../harness/src/cases/knot/superhelix_on_curve.hpp"
 #include "../../harness/src/cases/knot/trefoil_tying.hpp"
@@ -38,7 +39,7 @@ TEST(KnotCases, TrefoilPassesAtDefaultLevels) {
   const auto result = run_at_default_levels(named("knot/trefoil-nodal"));
   EXPECT_TRUE(result.passed()) << failing_gates(result);
   EXPECT_FALSE(result.gates.empty());
-  EXPECT_EQ(rodvv::testing::case_names_of_family("knot").size(), 7u);
+  EXPECT_EQ(rodvv::testing::case_names_of_family("knot").size(), 8u);
   // The report's contact-force profile beside H(s): zero on the tails, positive in the braid.
   const auto& series = result.levels.back().series;
   const auto profile = std::find_if(series.begin(), series.end(), [](const Series& s) { return s.name == "contact force p(s)"; });
@@ -118,6 +119,26 @@ TEST(KnotCases, BarrierLimitPassesAndALinearPenaltysOrderIsRed) {
     linear.gates = {order_gate("overlap", 1.0, "a linear penalty's overlap ~ F / k")};
     EXPECT_FALSE(run_at_default_levels(linear).passed()) << name;
   }
+}
+
+knot::PulledKnot pulled(int half_twists);  // below
+
+// With hard contact the trefoil passes its gates, among them no overlap beyond the statics' gap tolerance
+// (1e-9 L); the overlap the barrier leaves at the same level (about 2.5 % of 2h: some 1e5 tolerances) is red.
+TEST(KnotCases, HardTrefoilPassesAndTheBarriersOverlapIsRed) {
+  const auto result = run_at_default_levels(named("knot/trefoil-hard-nodal"));
+  EXPECT_TRUE(result.passed()) << failing_gates(result);
+  EXPECT_EQ(result.gates.size(), 4u);  // order, magnitude, overlap, resolution
+  Case soft = named("knot/trefoil-hard-nodal");
+  const double length = pulled(3).model.length, h = 0.05;  // the knot's defaults (the helper below)
+  soft.run_level = [length, h](const Parameters& p, double level) {
+    const auto knot_parameters = knot::trefoil_knot(p, std::nullopt, 500.0);
+    LevelOutput out = knot::relax_nodal_trefoil(knot_parameters, std::size_t(level));
+    const double overlap = out.metrics.at("deepest_overlap").computed * 2 * h;
+    out.metrics["overlap_over_tolerance"] = {overlap / (1e-9 * length), 0.0, overlap / (1e-9 * length), 1.0};
+    return out;
+  };
+  EXPECT_FALSE(run_at_default_levels(soft).passed());
 }
 
 // The rod of the case's construction at N = 100 (lambda = sqrt(B/T) = 0.5, h = 0.05).

@@ -11,11 +11,18 @@ inline constexpr const char* kContactStaticsMethod =
     "non-adjacent segments (sort-and-sweep broad phase); statics by Newton with exact derivatives, sparse LU, "
     "pseudo-transient continuation (Kelley & Keyes 1998)";
 
+// The nodal rod's hard contact (d >= 2h by complementarity, no barrier).
+inline constexpr const char* kHardContactStaticsMethod =
+    "discrete elastic rod (Bergou et al. 2008) with hard frictionless self-contact d >= 2h between non-adjacent "
+    "segments: Newton-LCP (the linearised contacts' LCP solved by Lemke's method at every step, exact derivatives, "
+    "sparse LU, pseudo-transient continuation), started from the barrier's equilibrium";
+
 void add_trefoil_nodal(Registry& registry);     // open trefoil pulled by a dead load, nodal 3-D rod
 void add_trefoil_superhelix(Registry& registry);  // the same on the Super-Helix
 void add_trefoil_looseness_superhelix(Registry& registry);  // the Super-Helix trefoil toward the loose limit
 void add_trefoil_barrier_limit(Registry& registry);  // both rods' trefoils as the barrier stiffens
-void add_plectoneme_nodal(Registry& registry);
-void add_plectoneme_superhelix(Registry& registry);  // the same ply on the Super-Helix, tip in a sliding clamp  // plectoneme with a free end loop, both ends clamped, nodal 3-D rod
+void add_trefoil_hard_nodal(Registry& registry);  // the nodal rod's trefoil with hard contact
+void add_plectoneme_nodal(Registry& registry);  // plectoneme with a free end loop, both ends clamped, nodal 3-D rod
+void add_plectoneme_superhelix(Registry& registry);  // the same ply on the Super-Helix, tip in a sliding clamp
 
 }  // namespace rodvv::harness::knot_cases

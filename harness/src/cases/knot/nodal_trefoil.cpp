@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "../case_builder.hpp"
 #include "contact_profile.hpp"
@@ -18,36 +19,73 @@ namespace rodvv::harness::knot_cases {
 namespace rod = solvers::rod3d;
 using namespace cases;
 
-LevelOutput relax_nodal_trefoil(const TrefoilKnot& k, std::size_t n) {
+namespace {
+
+struct Relaxed {
+  rod::RodModel model;
+  rod::StaticResult result;
+};
+
+// Tied as nodal_trefoil.hpp says and relaxed with the barrier k = barrier T / h^2.
+Relaxed relax_with_barrier(const TrefoilKnot& k, std::size_t n) {
   const double h = k.radius(), lambda = k.lambda();
   const TiedRod tied = tie_braid_closure({3, 1.25 * h, 10.0 * h, 0.6 * lambda, 3.0 * h, 6.0 * lambda}, n);
   const PulledKnot pulled = pull_tied_rod(tied, k.B, k.C, k.T, {h, k.barrier * k.T / (h * h)});
-  const rod::RodModel& model = pulled.model;
-
   rod::StaticOptions options;
   options.pseudo_transient = true;
   options.max_iterations = 200 * n;  // measured: 340 to 1200 iterations at N = 50 .. 400, barrier 125 .. 8000
   options.tolerance = 1e-9;
-  const auto result = rod::solve_static(model, pulled.start, options);
+  return {pulled.model, rod::solve_static(pulled.model, pulled.start, options)};
+}
 
-  const auto solution = rod::make_solution(model, result.state);
-  const auto contacts = rod::self_contacts(model.self_contact, result.state.position, rod::rest_edge_length(model));
-  if (contacts.empty())
-    throw SolverError(kContactStaticsMethod, "the knot came undone: no self-contact at equilibrium", result.iterations,
+LevelOutput measure(const TrefoilKnot& k, const Relaxed& relaxed, const std::string& method) {
+  const rod::RodModel& model = relaxed.model;
+  const rod::StaticResult& result = relaxed.result;
+  const std::size_t n = model.elements;
+  const double h = k.radius();
+  if (result.contacts.empty())
+    throw SolverError(method, "the knot came undone: no self-contact at equilibrium", result.iterations,
                       result.residual);
   double deepest = 0.0;
-  for (const auto& c : contacts) deepest = std::max(deepest, 1.0 - c.distance / (2.0 * h));
+  for (const auto& c : result.contacts) deepest = std::max(deepest, 1.0 - c.distance / (2.0 * h));
 
   // The ends' span along the pull (root: the support point, s = 0), for the end shortening.
   const double span = (result.state.position[n] - model.root.position).x();
 
   LevelOutput output;
-  add_trefoil_metrics(output, solution, k.B, k.T, span, {kContactStaticsMethod, result.iterations, result.residual});
-  output.metrics["contact_pairs"] = diagnostic(double(contacts.size()));
-  output.series.push_back(contact_force_series(model, contacts));
+  add_trefoil_metrics(output, rod::make_solution(model, result.state), k.B, k.T, span,
+                      {method, result.iterations, result.residual});
+  output.metrics["contact_pairs"] = diagnostic(double(result.contacts.size()));
+  output.series.push_back(contact_force_series(model, result.contacts));
   output.metrics["deepest_overlap"] = diagnostic(deepest);
   output.metrics["iterations"] = diagnostic(double(result.iterations));
   output.metrics["equilibrium_residual"] = diagnostic(result.residual);
+  return output;
+}
+
+}  // namespace
+
+LevelOutput relax_nodal_trefoil(const TrefoilKnot& k, std::size_t n) {
+  return measure(k, relax_with_barrier(k, n), kContactStaticsMethod);
+}
+
+LevelOutput relax_nodal_trefoil_hard(const TrefoilKnot& k, std::size_t n) {
+  Relaxed relaxed = relax_with_barrier(k, n);
+  const std::size_t tying_iterations = relaxed.result.iterations;
+  relaxed.model.self_contact = {k.radius(), 0.0, rod::ContactLaw::Hard};
+  rod::StaticOptions options;
+  options.pseudo_transient = true;  // the knot's zero modes (sliding, turning about the pull) stay
+  options.max_iterations = 200 * n;
+  options.tolerance = 1e-9;
+  relaxed.result = rod::solve_static(relaxed.model, relaxed.result.state, options);
+  LevelOutput output = measure(k, relaxed, kHardContactStaticsMethod);
+  // The constraint's own residual: the statics stops when every gap is above -tolerance L (statics.hpp),
+  // so the deepest overlap 2h - d is at most tolerance L.
+  double overlap = 0.0;
+  for (const auto& c : relaxed.result.contacts) overlap = std::max(overlap, 2.0 * k.radius() - c.distance);
+  output.metrics["overlap_over_tolerance"] = value_sample(overlap / (options.tolerance * relaxed.model.length), 1.0);
+  output.metrics["hard_iterations"] = diagnostic(double(relaxed.result.iterations));
+  output.metrics["iterations"] = diagnostic(double(tying_iterations + relaxed.result.iterations));
   return output;
 }
 
