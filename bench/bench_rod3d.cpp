@@ -9,6 +9,8 @@
 //    stepping), 400 (0.092) and 1600 (0.0054).
 //  - BM_TrefoilKnot: the whole knot/trefoil-nodal level (tying, pseudo-transient relaxation with
 //    self-contact, metrics) at N = 100, 200, 400 (issue 12 target at N = 400: under 2 s).
+//  - BM_TrefoilKnotHard: the whole knot/trefoil-hard-nodal level (the same tying and barrier relaxation,
+//    then the hard-contact Newton-LCP from the barrier's equilibrium) at N = 100, 200, 400.
 //  - BM_TrefoilKnotSuperHelix: the whole knot/trefoil-superhelix level (laying the Super-Helix on the
 //    braid closure, the potential Newton with line self-contact, metrics) at N = 50, 100, 200, 400.
 //  - BM_Plectoneme: the whole knot/plectoneme-nodal level (laying the 15-degree ply, its relaxation under
@@ -97,6 +99,12 @@ void BM_TrefoilKnot(benchmark::State& bench) {
   for (auto _ : bench) benchmark::DoNotOptimize(c->run_level(c->info.parameters, double(bench.range(0))));
 }
 BENCHMARK(BM_TrefoilKnot)->Arg(100)->Arg(200)->Arg(400)->Unit(benchmark::kMillisecond);
+
+void BM_TrefoilKnotHard(benchmark::State& bench) {
+  const auto* c = rodvv::harness::default_registry().find("knot/trefoil-hard-nodal");
+  for (auto _ : bench) benchmark::DoNotOptimize(c->run_level(c->info.parameters, double(bench.range(0))));
+}
+BENCHMARK(BM_TrefoilKnotHard)->Arg(100)->Arg(200)->Arg(400)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 void BM_TrefoilKnotSuperHelix(benchmark::State& bench) {
   const auto* c = rodvv::harness::default_registry().find("knot/trefoil-superhelix");

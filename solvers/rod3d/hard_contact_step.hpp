@@ -51,7 +51,7 @@ double complementarity_measure(const RodModel& model, const std::vector<ContactP
 // has G_c dz = 0, so near convergence it vanishes from the step) but makes J positive definite where the
 // elastic stiffness alone is not: a knot held together by its contacts is stable only through them, and
 // J^-1 - hence W - is then indefinite in the directions they block, where Lemke's method fails. rho is
-// given by the caller (statics.cpp: 100 x the force scale per radius h). Held rows and columns untouched.
+// given by the caller (statics.cpp: 1000 x the force scale per radius h). Held rows and columns untouched.
 void add_contact_stiffness(const RodModel& model, const RodState& state, const std::vector<ContactPair>& pairs,
                            double rho, Eigen::SparseMatrix<double>& jacobian);
 

@@ -251,11 +251,14 @@ constexpr double kMinPseudoTime = 1e-6;
 constexpr double kMaxPseudoTime = 1e6;
 
 // The hard contacts' augmentation rho (hard_contact_step.hpp) in units of the force scale per radius h.
-// Measured on the open trefoil (knot/trefoil-nodal's knot, pseudo-transient from the tied curve): 10: 425
-// iterations at N = 50, and at N = 100 the iteration stalls (W indefinite whenever tau grows); 100: 397,
-// 411 and 2930 iterations at N = 50, 100, 200. A barrier of stiffness k at the contact
-// force F is 2 sqrt(k F) stiff, 100 F / h at the barrier k = 2500 F / h^2 (knot/trefoil-nodal: 500 T / h^2).
-constexpr double kContactAugmentation = 100.0;
+// Measured on the open trefoil (knot/trefoil-nodal's knot): from the tied curve with rho = 10, 425
+// iterations at N = 50 and a stall at N = 100 (W indefinite whenever tau grows); with 100, 397, 411 and
+// 2930 iterations at N = 50, 100, 200. Hardening the barrier's equilibrium (knot/trefoil-hard-nodal) with
+// 100: 43, 16, 27 and 690 iterations at N = 50 .. 400, and a stall at looseness 0.15, N = 200; with 1000:
+// 51, 15, 20, 22, and 2681 iterations (33 s) at looseness 0.15, N = 200. A barrier of stiffness k at the
+// contact force F is 2 sqrt(k F) stiff: 1000 F / h is the barrier k = 2.5e5 F / h^2 (knot/trefoil-nodal
+// uses 500 T / h^2).
+constexpr double kContactAugmentation = 1000.0;
 
 // Adds D / tau to the free position and angle rows of the Jacobian: the "mass" of a gradient flow
 // whose unit pseudo-time relaxes a mode of the rod's global stiffness (force scale / L per unit

@@ -24,10 +24,15 @@ LevelOutput relax_nodal_trefoil(const TrefoilKnot& knot, std::size_t edges);
 // The same knot with hard contact (d >= 2h, solvers/rod3d/statics.hpp: Newton-LCP): relaxed with the
 // barrier as above (the long slide and turn of the knot into place, where the barrier's smooth energy
 // suits the pseudo-transient iteration), then hardened - the hard statics started from the barrier's
-// equilibrium (11 to 27 iterations at N = 100, 200; from the tied curve directly, 400 to 2900). The
+// equilibrium (15 to 51 iterations at N = 50 .. 400, statics.cpp; from the tied curve directly, 400 to 2900). The
 // metrics gain overlap_over_tolerance (the deepest 2h - d over the statics' gap tolerance, tolerance x L)
 // and the diagnostic hard_iterations; iterations counts both stages.
 LevelOutput relax_nodal_trefoil_hard(const TrefoilKnot& knot, std::size_t edges);
+// The nodal trefoil cases' looseness h sqrt(T/B), default 0.1 in [0.07, 0.15], and their window C/B in
+// [0.3, 100] (measured on knot/trefoil-nodal, nodal_trefoil.cpp).
+Parameter nodal_looseness_parameter();
+void require_nodal_trefoil_window(Case& c);
+
 // contact_pairs, deepest_overlap, iterations, equilibrium_residual.
 std::vector<MetricSpec> nodal_trefoil_diagnostic_specs();
 

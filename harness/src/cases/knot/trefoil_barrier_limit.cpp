@@ -111,12 +111,11 @@ void add_trefoil_barrier_limit(Registry& registry) {
   Case nodal = barrier_limit_case(
       {"nodal", "nodal rod", "h^2 (per segment pair)", kContactStaticsMethod, relax_nodal_trefoil,
        nodal_trefoil_diagnostic_specs(),
-       make_parameter("looseness", 0.1, 0.07, 0.15, false, false, "", "h sqrt(T/B), the rod's radius in knot units"),
-       0.5, 0.5,
+       nodal_looseness_parameter(), 0.5, 0.5,
        "a point force k delta^2 per segment pair, the braid's load on the same pairs at a fixed mesh: delta ~ k^(-1/2) "
        "(measured 0.48, 0.52, 0.46 over barrier 125 .. 8000)",
        0.012079, 0.166});
-  require(nodal, ratio_window("C", "B", 0.3, 100.0, "the twist-to-bending ratios at which the trefoil was measured"));
+  require_nodal_trefoil_window(nodal);
   registry.add(std::move(nodal));
   Case superhelix = barrier_limit_case(
       {"superhelix", "Super-Helix", "h^3 (per unit length)", kSuperHelixContactMethod, relax_superhelix_trefoil,

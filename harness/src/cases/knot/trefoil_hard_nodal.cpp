@@ -57,12 +57,10 @@ void add_trefoil_hard_nodal(Registry& registry) {
        "H(s) = T at every s, through the braid (Noether, frictionless contact; PHYSICS.md §1.2, §5.1); no overlap "
        "beyond the solver's tolerance",
        "Audoly, Clauvelin & Neukirch 2007 (PRL 99:164301); PHYSICS.md §5.1; ALGORITHMS.md §4", kHardContactStaticsMethod},
-      trefoil_parameters(
-          {make_parameter("looseness", 0.1, 0.07, 0.15, false, false, "", "h sqrt(T/B), the rod's radius in knot units")}),
+      trefoil_parameters({nodal_looseness_parameter()}),
       element_levels("number of edges", {50, 100, 200}, {50, 100, 200, 400}), std::move(metrics), std::move(gates),
       run);
-  require(c, ratio_window("C", "B", 0.3, 100.0, "the twist-to-bending ratios at which the tied trefoil holds and its "
-                                                "levels resolve H"));
+  require_nodal_trefoil_window(c);
   registry.add(std::move(c));
 }
 

@@ -51,20 +51,11 @@ void add_trefoil_nodal(Registry& registry) {
        "the braid sigma_1^3 and relaxed with frictionless self-contact (barrier) of radius h = looseness sqrt(B/T).",
        "H(s) = T at every s, through the braid (Noether, frictionless contact; PHYSICS.md §1.2, §5.1)",
        "Audoly, Clauvelin & Neukirch 2007 (PRL 99:164301); PHYSICS.md §5.1", kContactStaticsMethod},
-      // From 0.07 (measured 2026-11-26 over barrier 50 .. 5000 and C/B 0.3 .. 100): at 0.05 the knot of
-      // the coarsest level (50 edges) comes undone (no self-contact at equilibrium: the thinner strands
-      // passed through each other), at 0.06 with barrier 5000 the H deviation's order is 1.53.
-      trefoil_parameters(
-          {make_parameter("looseness", 0.1, 0.07, 0.15, false, false, "", "h sqrt(T/B), the rod's radius in knot units"),
-           make_parameter("barrier", 500.0, 50.0, 5000.0, false, false, "", "barrier stiffness k h^2 / T")}),
+      trefoil_parameters({nodal_looseness_parameter(), make_parameter("barrier", 500.0, 50.0, 5000.0, false, false, "",
+                                                                      "barrier stiffness k h^2 / T")}),
       element_levels("number of edges", {50, 100, 200}, {50, 100, 200, 400}), std::move(metrics), std::move(gates),
       run);
-  // The knot is posed in units of sqrt(B/T) (B = 1e12 with C scaled alike, T = 1e-3 .. 1e12 pass), so what
-  // shapes it is C/B: measured 0.3 .. 100 pass; at C/B = 0.1 the H deviation's order leaves its window,
-  // at 0.007 it is -0.36 and at B = 1e12 (C/B = 1e-12) the knot comes undone. Real rods have C/B =
-  // 1/(1 + nu) in [0.67, 1] (isotropic) and about 1.5 (DNA).
-  require(c, ratio_window("C", "B", 0.3, 100.0, "the twist-to-bending ratios at which the tied trefoil holds and its "
-                                                "levels resolve H"));
+  require_nodal_trefoil_window(c);
   registry.add(std::move(c));
 }
 
