@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "rodvv/solvers/contact/lcp.hpp"
 
@@ -29,13 +30,14 @@ double hard_contact_reach(const RodModel& model) { return 3.0 * model.self_conta
 
 std::vector<ContactPair> candidates_with_forces(const RodModel& model, const RodState& state,
                                                 const std::vector<ContactPair>& forces) {
-  auto pairs = contact_candidates(model.self_contact, state.position, rest_edge_length(model), hard_contact_reach(model));
+  auto pairs =
+      contact_candidates(model.self_contact, state.position, rest_edge_length(model), hard_contact_reach(model));
   // Both lists are sorted by (first, second): one merge.
+  const auto key = [](const ContactPair& p) { return std::make_pair(p.first, p.second); };
   auto known = forces.begin();
   for (auto& pair : pairs) {
-    while (known != forces.end() && std::make_pair(known->first, known->second) < std::make_pair(pair.first, pair.second))
-      ++known;
-    pair.force = (known != forces.end() && known->first == pair.first && known->second == pair.second) ? known->force : 0.0;
+    while (known != forces.end() && key(*known) < key(pair)) ++known;
+    pair.force = (known != forces.end() && key(*known) == key(pair)) ? known->force : 0.0;
   }
   return pairs;
 }
@@ -46,7 +48,8 @@ void subtract_contact_forces(const RodModel& model, const std::vector<ContactPai
     if (pair.force == 0.0) continue;
     const auto gradient = distance_gradient(pair);
     const std::size_t vertex[4] = {pair.first, pair.first + 1, pair.second, pair.second + 1};
-    for (int a = 0; a < 4; ++a) r.segment<3>(Eigen::Index(layout.vertex(vertex[a]))) -= pair.force * gradient[std::size_t(a)];
+    for (int a = 0; a < 4; ++a)
+      r.segment<3>(Eigen::Index(layout.vertex(vertex[a]))) -= pair.force * gradient[std::size_t(a)];
   }
 }
 
@@ -72,7 +75,8 @@ void add_contact_stiffness(const RodModel& model, const RodState& state, const s
     for (int a = 0; a < 12; ++a)
       for (int b = 0; b < 12; ++b) {
         const double value = rho * gradient[std::size_t(a / 3)][a % 3] * gradient[std::size_t(b / 3)][b % 3];
-        if (value != 0.0) coordinates.emplace_back(int(3 * vertex[a / 3] + a % 3), int(3 * vertex[b / 3] + b % 3), value);
+        if (value != 0.0)
+          coordinates.emplace_back(int(3 * vertex[a / 3] + a % 3), int(3 * vertex[b / 3] + b % 3), value);
       }
   }
   const DofLayout layout(model);

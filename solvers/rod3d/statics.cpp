@@ -218,7 +218,8 @@ std::optional<Trial> try_step(const RodModel& model, const RodState& state, cons
     return std::nullopt;
   }
   zero_held(held, r);
-  trial.measure = equilibrium_measure(model, trial.state, lambda, std::move(r), forces ? &trial.contacts : nullptr, held);
+  trial.measure =
+      equilibrium_measure(model, trial.state, lambda, std::move(r), forces ? &trial.contacts : nullptr, held);
   if (!std::isfinite(trial.measure)) return std::nullopt;
   return trial;
 }
@@ -346,9 +347,10 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
     // carry the error of the last step (up to floor / stiffness): one more full Newton step, taken
     // without the line search, squares that error away (kept if the residual stays at the floor).
     const bool at_floor = outcome.residual <= round_off_floor(model, state, scales.force);
-    if (hard)
-      detail::add_contact_stiffness(model, state, contacts, kContactAugmentation * scales.force / model.self_contact.radius,
-                                    jacobian);
+    if (hard) {
+      const double rho = kContactAugmentation * scales.force / model.self_contact.radius;
+      detail::add_contact_stiffness(model, state, contacts, rho, jacobian);
+    }
     jacobian.prune([&](Eigen::Index row, Eigen::Index, double) { return !held[std::size_t(row)]; });
     if (pseudo_transient) add_pseudo_time(model, scales, held, 1.0 / pseudo_time, jacobian);
     // Solved in the problem's own units: rows over their residual scale (forces, moments, lengths),
@@ -426,8 +428,9 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
     // (a pair that a short step cannot close gets no force), so the residual under the previous forces
     // is no yardstick for a step with new ones: without this, a rejected step shortened tau, the shorter
     // step changed the forces again, and tau fell to its floor.
-    const double yardstick =
-        hard ? std::max(outcome.residual, equilibrium_measure(model, state, lambda, r, &step_forces, held)) : outcome.residual;
+    const double yardstick = hard ? std::max(outcome.residual,
+                                             equilibrium_measure(model, state, lambda, r, &step_forces, held))
+                                  : outcome.residual;
     if (pseudo_transient) {
       // Pseudo-transient continuation (Kelley & Keyes 1998): the step is taken whole if it keeps the
       // residual finite, within 10 x its value (far from equilibrium the residual need not fall at
@@ -457,7 +460,8 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
     double alpha = 1.0;
     bool accepted = false;
     for (int halving = 0; halving < 30; ++halving, alpha *= 0.5) {
-      auto trial = try_step(model, state, alpha * dz, lambda, held, hard ? &step_forces : nullptr);  // nothing: shorter
+      // nothing: a shorter step
+      auto trial = try_step(model, state, alpha * dz, lambda, held, hard ? &step_forces : nullptr);
       if (trial && trial->measure <= (1.0 - 1e-4 * alpha) * yardstick) {
         state = std::move(trial->state);
         if (hard) contacts = step_forces;

@@ -34,6 +34,7 @@
 #include "rodvv/harness/registry.hpp"
 #include "rodvv/harness/trajectory_metrics.hpp"
 #include "rodvv/references/eulerian1d.hpp"
+#include "rodvv/solvers/eulerian1d/solid_fraction.hpp"
 #include "rodvv/solvers/eulerian1d/simulate.hpp"
 
 namespace rodvv::harness {
@@ -135,6 +136,11 @@ eu::Grid domain_for(const Setup& setup, std::size_t cells) {
   return {lo - 0.25 * L0, hi + 0.25 * L0, cells};
 }
 
+// The exact reference map x -> xi(x) at time t.
+eu::ReferenceMap exact_map(const ref::BarMotion& motion, double t) {
+  return [motion, t](double x) { return ref::bar_eulerian_state(motion, x, t).xi; };
+}
+
 struct Run {
   eu::Problem problem;
   eu::Result result;
@@ -150,13 +156,12 @@ Run simulate_setup(const Setup& setup, const Parameters& p, double level) {
   problem.right_wall = setup.right_wall;
   problem.gravity = setup.gravity;
   const auto nodes = static_cast<Eigen::Index>(problem.grid.nodes());
-  problem.xi0.resize(nodes);
+  // The initial map through the sampler a user's general initial condition goes through (it checks that
+  // the map is strictly increasing between the nodes too, solid_fraction.hpp).
+  problem.xi0 = eu::sample_reference_map(problem.grid, exact_map(setup.motion, 0.0));
   problem.v0.resize(nodes);
-  for (Eigen::Index j = 0; j < nodes; ++j) {
-    const auto point = ref::bar_eulerian_state(setup.motion, problem.grid.node(static_cast<std::size_t>(j)), 0.0);
-    problem.xi0(j) = point.xi;
-    problem.v0(j) = point.velocity;
-  }
+  for (Eigen::Index j = 0; j < nodes; ++j)
+    problem.v0(j) = ref::bar_eulerian_state(setup.motion, problem.grid.node(static_cast<std::size_t>(j)), 0.0).velocity;
   eu::Settings settings;
   settings.t_end = setup.t_end;
   settings.cfl = parameter_value(p, "cfl");
@@ -179,18 +184,14 @@ MetricSample length_error_sample(double deviation, const Parameters& p) {
 }
 MetricSample diagnostic(double value) { return {value, std::nullopt, std::nullopt}; }
 
-// Exact cell mass rho0 (clip(xi(x_{c+1})) - clip(xi(x_c))) from the reference map: the quantity
-// the scheme's rho0 l_c approximates (rho = rho0 xi_x integrated over the cell).
+// Exact cell mass rho0 l_c, l_c = clip(xi(x_{c+1})) - clip(xi(x_c)) of the exact map (solid_fraction.hpp,
+// exact for any monotone map): the quantity the scheme's rho0 l_c approximates (rho = rho0 xi_x
+// integrated over the cell). The scheme's own l_c comes from its nodal state (discretisation.hpp).
 std::vector<double> exact_cell_masses(const ref::BarMotion& motion, const eu::Grid& grid, double t) {
   const ref::BarMaterial m = ref::material_of(motion);
-  auto clip = [&](double xi) { return std::min(std::max(xi, 0.0), m.length); };
+  const auto solid = eu::solid_fraction(grid, {m.rho0, m.kappa, m.length}, exact_map(motion, t));
   std::vector<double> masses(grid.cells);
-  double previous = clip(ref::bar_eulerian_state(motion, grid.node(0), t).xi);
-  for (std::size_t c = 0; c < grid.cells; ++c) {
-    const double next = clip(ref::bar_eulerian_state(motion, grid.node(c + 1), t).xi);
-    masses[c] = m.rho0 * (next - previous);
-    previous = next;
-  }
+  for (std::size_t c = 0; c < grid.cells; ++c) masses[c] = m.rho0 * solid.solid_length[Eigen::Index(c)];
   return masses;
 }
 
@@ -496,8 +497,10 @@ Case standing_wave_case() {
                      "x(X,t) = X + A cos(pi X/L0) cos(pi c t/L0), free ends (F = 1), c = sqrt(kappa/rho0).",
                      "ends x_L = A cos(pi c t/L0), x_R = L0 - A cos(pi c t/L0); period 2 L0/c");
   c.info.parameters = material_parameters();
-  c.info.parameters.push_back(make_parameter("amplitude", 0.02, 0.0, 0.3, true, false, "length",
-                                             "A (needs A pi/L0 < 1 for F > 0)"));
+  // Up to 0.25 L0 (measured 2026-11-27): at 0.27 L0 the energy drift's order over the default levels is
+  // below 0.9 (0.866 at 0.3 L0; the extended levels pass there): the levels are not yet asymptotic.
+  c.info.parameters.push_back(make_parameter("amplitude", 0.02, 0.0, 0.25, true, false, "length",
+                                             "A (needs A <= 0.25 L0; F > 0 alone needs A pi/L0 < 1)"));
   // From 0.03 periods: at 0.01 the end error's order is 0.74, a horizon of a few steps (measured 2026-11-26).
   c.info.parameters.push_back(make_parameter("periods", 1.0, 0.03, 20.0, false, false, "", "horizon in periods 2 L0/c"));
   c.info.resolution = cell_resolution({100, 200, 400}, {100, 200, 400, 800, 1600, 3200});
@@ -507,13 +510,15 @@ Case standing_wave_case() {
        "E(t_end) - E(0), kinetic + elastic (upwind dissipates O(dx))", false, std::nullopt},
       {"energy_drift", MetricKind::Error, "", "max over time |E(t) - E(0)| / E(0), kinetic + elastic", false, 1.0},
       mass_metric(), steps_metric()};
-  require_window(c, "amplitude < L0 / pi (the deformation gradient F = 1 - A pi/L0 sin cos stays > 0)",
+  require_window(c, "amplitude <= 0.25 L0 (the deformation gradient F = 1 - A pi/L0 sin cos stays > 0 below L0/pi, "
+                    "and the default levels resolve the energy drift up to 0.25 L0)",
                  [](const Parameters& p) {
                    const double A = parameter_value(p, "amplitude"), L0 = parameter_value(p, "L0");
-                   if (!(A * std::numbers::pi < L0))
+                   if (!(A <= 0.25 * L0))
                      throw InputError("amplitude", "invalid parameter 'amplitude' = " + format_value(A) +
-                                                       ": must be < L0/pi = " + format_value(L0 / std::numbers::pi) +
-                                                       " (F = 1 - A pi/L0 sin cos > 0)");
+                                                       ": must be <= 0.25 L0 = " + format_value(0.25 * L0) +
+                                                       " (F = 1 - A pi/L0 sin cos > 0 needs < L0/pi; the levels "
+                                                       "resolve the energy drift up to 0.25 L0)");
                    ref::validate(standing_wave_setup(p).motion);
                  });
   c.run_level = [](const Parameters& p, double level) {
