@@ -15,10 +15,10 @@ VecX gap_gradient(const RodModel& model, const ContactPair& pair, const std::vec
   const DofLayout layout(model);
   VecX g = VecX::Zero(Eigen::Index(layout.size()));
   const auto gradient = distance_gradient(pair);
-  const std::size_t vertex[4] = {pair.first, pair.first + 1, pair.second, pair.second + 1};
+  const auto vertex = pair_vertices(pair);
   for (int a = 0; a < 4; ++a)
     for (int c = 0; c < 3; ++c) {
-      const std::size_t k = layout.vertex(vertex[a]) + std::size_t(c);
+      const std::size_t k = layout.vertex(vertex[std::size_t(a)]) + std::size_t(c);
       if (!held[k]) g[Eigen::Index(k)] += gradient[std::size_t(a)][c];
     }
   return g;
@@ -47,9 +47,9 @@ void subtract_contact_forces(const RodModel& model, const std::vector<ContactPai
   for (const auto& pair : pairs) {
     if (pair.force == 0.0) continue;
     const auto gradient = distance_gradient(pair);
-    const std::size_t vertex[4] = {pair.first, pair.first + 1, pair.second, pair.second + 1};
+    const auto vertex = pair_vertices(pair);
     for (int a = 0; a < 4; ++a)
-      r.segment<3>(Eigen::Index(layout.vertex(vertex[a]))) -= pair.force * gradient[std::size_t(a)];
+      r.segment<3>(Eigen::Index(layout.vertex(vertex[std::size_t(a)]))) -= pair.force * gradient[std::size_t(a)];
   }
 }
 
@@ -71,7 +71,7 @@ void add_contact_stiffness(const RodModel& model, const RodState& state, const s
   for (const auto& pair : pairs) {
     if (!(pair.force > 0.0)) continue;
     const auto gradient = distance_gradient(pair);
-    const std::size_t vertex[4] = {pair.first, pair.first + 1, pair.second, pair.second + 1};
+    const auto vertex = pair_vertices(pair);
     for (int a = 0; a < 12; ++a)
       for (int b = 0; b < 12; ++b) {
         const double value = rho * gradient[std::size_t(a / 3)][a % 3] * gradient[std::size_t(b / 3)][b % 3];

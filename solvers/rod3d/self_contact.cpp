@@ -119,7 +119,7 @@ void contact_force_hessian(const std::vector<Vec3>& x, const std::vector<Contact
                            std::vector<Eigen::Triplet<double>>& hessian) {
   for (const auto& pair : pairs) {
     if (pair.force == 0.0) continue;
-    const std::array<std::size_t, 4> vertex{pair.first, pair.first + 1, pair.second, pair.second + 1};
+    const auto vertex = pair_vertices(pair);
     contact::SegmentClosestPoints closest;
     closest.s = pair.s;
     closest.t = pair.t;
@@ -150,7 +150,7 @@ void self_contact_derivatives(const SelfContact& contact, const std::vector<Vec3
   if (is_hard(contact)) return;  // no energy: the forces are the statics' unknowns
   const contact::CubicBarrier law = barrier(contact);
   for (const auto& pair : self_contacts(contact, x, edge_length)) {
-    const std::array<std::size_t, 4> vertex{pair.first, pair.first + 1, pair.second, pair.second + 1};
+    const auto vertex = pair_vertices(pair);
     const std::array<Vec3, 4> ends{x[vertex[0]], x[vertex[1]], x[vertex[2]], x[vertex[3]]};
     contact::SegmentClosestPoints closest;
     closest.s = pair.s;

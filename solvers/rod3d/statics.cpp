@@ -293,18 +293,18 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
   NewtonOutcome outcome;
   VecX r;
   Eigen::SparseMatrix<double> jacobian;
-  // The banded LU (O(N)) unless self-contact couples distant vertices; then a sparse LU with a
-  // fill-reducing column ordering (COLAMD), still about O(N) for a few contacts.
+  // The banded LU (O(N)) unless self-contact (the barrier's stiffness, or the hard contacts' held forces
+  // and augmentation) couples distant vertices; then a sparse LU with a fill-reducing column ordering
+  // (COLAMD), still about O(N) for a few contacts.
   elastica2d::BandedLU banded;
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> sparse;
   const bool contact = has_self_contact(model);
   const bool hard = hard_contact(model);  // forces by complementarity (hard_contact_step.hpp)
-  const bool sparse_jacobian = contact;  // the barrier's or the hard contacts' stiffness couples distant vertices
   // The symbolic analysis (COLAMD ordering, elimination tree) is redone only when the sparsity
   // pattern changes - when a contact pair appears or goes - not at every iteration.
   std::vector<int> pattern_outer, pattern_inner;
   const auto factorize = [&](Eigen::SparseMatrix<double>& a) {
-    if (!sparse_jacobian) return banded.factorize(a);
+    if (!contact) return banded.factorize(a);
     a.makeCompressed();
     const Eigen::Index columns = a.cols(), entries = a.nonZeros();
     const bool same = std::equal(a.outerIndexPtr(), a.outerIndexPtr() + columns + 1, pattern_outer.begin(),
@@ -319,9 +319,7 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
     sparse.factorize(a);
     return sparse.info() == Eigen::Success;
   };
-  const auto solve = [&](const VecX& b) -> VecX {
-    return sparse_jacobian ? VecX(sparse.solve(b)) : VecX(banded.solve(b));
-  };
+  const auto solve = [&](const VecX& b) -> VecX { return contact ? VecX(sparse.solve(b)) : VecX(banded.solve(b)); };
   const bool pseudo_transient = options.pseudo_transient;
   double pseudo_time = options.initial_pseudo_time;
   for (std::size_t it = 0; it < options.max_iterations; ++it) {

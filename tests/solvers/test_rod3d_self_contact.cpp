@@ -42,6 +42,16 @@ constexpr double kEdge = 0.05;
 
 double energy_at(const std::vector<Vec3>& x) { return rod::self_contact_energy(kContact, x, kEdge); }
 
+// The parameter a model's validation names, or "none".
+std::string parameter_of(const rod::RodModel& m) {
+  try {
+    rod::validate(m);
+  } catch (const rodvv::InputError& e) {
+    return e.parameter();
+  }
+  return "none";
+}
+
 TEST(Rod3dSelfContact, GradientAndHessianMatchFiniteDifferences) {
   std::mt19937 rng(3);
   std::normal_distribution<double> g(0.0, 1.0);
@@ -134,14 +144,6 @@ TEST(Rod3dSelfContact, ExcludedNeighboursAndBadInput) {
                                    Vec3(0.5, -2, 0)};
   EXPECT_THROW(rod::self_contacts(kContact, crossing, 1.0), rodvv::SolverError);
   // In a rod model: both numbers positive, and a radius that leaves some pair of segments able to touch.
-  const auto parameter_of = [](const rod::RodModel& m) {
-    try {
-      rod::validate(m);
-    } catch (const rodvv::InputError& e) {
-      return e.parameter();
-    }
-    return std::string("none");
-  };
   rod::RodModel m;
   m.elements = 20;
   m.length = 2.0;  // ebar = 0.1
@@ -280,8 +282,8 @@ TEST(Rod3dSelfContact, HardContactIsTheBarriersLimit) {
       EXPECT_GT(pair.force, 0.0);
       EXPECT_NEAR(pair.distance, 2 * h, length_tolerance) << pair.first << ", " << pair.second;
       const auto gradient = rod::distance_gradient(pair);
-      const std::size_t vertex[4] = {pair.first, pair.first + 1, pair.second, pair.second + 1};
-      for (int a = 0; a < 4; ++a) contact_force[vertex[a]] += pair.force * gradient[a];
+      const auto vertex = rod::pair_vertices(pair);
+      for (std::size_t a = 0; a < 4; ++a) contact_force[vertex[a]] += pair.force * gradient[a];
       total += pair.force;
     }
     // Balance on the free vertices (the clamps hold vertices 0, 1, N - 1, N), in the statics' force scale.
@@ -303,14 +305,6 @@ TEST(Rod3dSelfContact, HardContactIsTheBarriersLimit) {
 }
 
 TEST(Rod3dSelfContact, HardContactBadInput) {
-  const auto parameter_of = [](const rod::RodModel& m) {
-    try {
-      rod::validate(m);
-    } catch (const rodvv::InputError& e) {
-      return e.parameter();
-    }
-    return std::string("none");
-  };
   Racket r = racket(40, 0.0);
   r.model.self_contact = {0.02, 0.0, rod::ContactLaw::Hard};
   EXPECT_EQ(parameter_of(r.model), "none");

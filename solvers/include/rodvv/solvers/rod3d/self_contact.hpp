@@ -69,6 +69,12 @@ std::vector<ContactPair> self_contacts(const SelfContact& contact, const std::ve
 std::vector<ContactPair> contact_candidates(const SelfContact& contact, const std::vector<Vec3>& x,
                                             double edge_length, double reach);
 
+// The pair's four vertices a0, a1, b0, b1 (segment i joins vertices i and i + 1), in the order of
+// distance_gradient's blocks.
+inline std::array<std::size_t, 4> pair_vertices(const ContactPair& pair) {
+  return {pair.first, pair.first + 1, pair.second, pair.second + 1};
+}
+
 // d(distance)/d(a0, a1, b0, b1) of a pair at its closest points (the envelope theorem: the parameters'
 // motion does not change d to first order): (n (1 - s), n s, -n (1 - t), -n t), n = pair.normal.
 std::array<Vec3, 4> distance_gradient(const ContactPair& pair);
