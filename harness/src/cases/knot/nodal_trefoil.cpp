@@ -26,16 +26,22 @@ struct Relaxed {
   rod::StaticResult result;
 };
 
+// Both stages relax by pseudo-transient continuation: the knot's zero modes (sliding along the tails,
+// turning about the pull) stay with either contact law.
+rod::StaticOptions relaxation_options(std::size_t n) {
+  rod::StaticOptions options;
+  options.pseudo_transient = true;
+  options.max_iterations = 200 * n;  // measured: 340 to 1200 iterations at N = 50 .. 400, barrier 125 .. 8000
+  options.tolerance = 1e-9;
+  return options;
+}
+
 // Tied as nodal_trefoil.hpp says and relaxed with the barrier k = barrier T / h^2.
 Relaxed relax_with_barrier(const TrefoilKnot& k, std::size_t n) {
   const double h = k.radius(), lambda = k.lambda();
   const TiedRod tied = tie_braid_closure({3, 1.25 * h, 10.0 * h, 0.6 * lambda, 3.0 * h, 6.0 * lambda}, n);
   const PulledKnot pulled = pull_tied_rod(tied, k.B, k.C, k.T, {h, k.barrier * k.T / (h * h)});
-  rod::StaticOptions options;
-  options.pseudo_transient = true;
-  options.max_iterations = 200 * n;  // measured: 340 to 1200 iterations at N = 50 .. 400, barrier 125 .. 8000
-  options.tolerance = 1e-9;
-  return {pulled.model, rod::solve_static(pulled.model, pulled.start, options)};
+  return {pulled.model, rod::solve_static(pulled.model, pulled.start, relaxation_options(n))};
 }
 
 LevelOutput measure(const TrefoilKnot& k, const Relaxed& relaxed, const std::string& method) {
@@ -73,10 +79,7 @@ LevelOutput relax_nodal_trefoil_hard(const TrefoilKnot& k, std::size_t n) {
   Relaxed relaxed = relax_with_barrier(k, n);
   const std::size_t tying_iterations = relaxed.result.iterations;
   relaxed.model.self_contact = {k.radius(), 0.0, rod::ContactLaw::Hard};
-  rod::StaticOptions options;
-  options.pseudo_transient = true;  // the knot's zero modes (sliding, turning about the pull) stay
-  options.max_iterations = 200 * n;
-  options.tolerance = 1e-9;
+  const rod::StaticOptions options = relaxation_options(n);
   relaxed.result = rod::solve_static(relaxed.model, relaxed.result.state, options);
   LevelOutput output = measure(k, relaxed, kHardContactStaticsMethod);
   // The constraint's own residual: the statics stops when every gap is above -tolerance L (statics.hpp),
