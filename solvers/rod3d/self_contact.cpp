@@ -151,6 +151,11 @@ void self_contact_derivatives(const SelfContact& contact, const std::vector<Vec3
   const contact::CubicBarrier law = barrier(contact);
   for (const auto& pair : self_contacts(contact, x, edge_length)) {
     const auto vertex = pair_vertices(pair);
+    if (!hessian) {  // the gradient alone: the envelope theorem's, no jets (a residual is 2x cheaper)
+      const auto gradient_d = distance_gradient(pair);
+      for (int k = 0; k < 4; ++k) gradient[vertex[k]] -= pair.force * gradient_d[k];
+      continue;
+    }
     const std::array<Vec3, 4> ends{x[vertex[0]], x[vertex[1]], x[vertex[2]], x[vertex[3]]};
     contact::SegmentClosestPoints closest;
     closest.s = pair.s;
@@ -158,7 +163,6 @@ void self_contact_derivatives(const SelfContact& contact, const std::vector<Vec3
     const PairJet d = distance_jet(ends, closest);
     const double d_phi = -law.force(d.v), dd_phi = law.force_rate(d.v);
     for (int a = 0; a < kPairDofs; ++a) gradient[vertex[a / 3]][a % 3] += d_phi * d.g[a];
-    if (!hessian) continue;
     for (int a = 0; a < kPairDofs; ++a)
       for (int b = 0; b < kPairDofs; ++b) {
         const double value = dd_phi * d.g[a] * d.g[b] + d_phi * d.hessian(a, b);

@@ -193,6 +193,14 @@ void add_plectoneme_nodal(Registry& registry) {
   // -0.0003; p law -0.0132, -0.0030, -0.0004; n_t law -0.0584, -0.0192, -0.0038; theta 14.92, 14.93,
   // 14.95 deg; 2474, 1476, 682 iterations, 8.5, 10.4, 11.1 s. (Since the statics solves its KKT system in
   // the problem's units, the pseudo-transient path differs: 1671, 1398, 1726 iterations, 54 s in all.)
+  // The relaxation's end point depends on round-off: the contact residual's gradient taken by the
+  // envelope theorem instead of by jets (equal to a few ulps) gave 1591, 1459, 1462 iterations (5.7,
+  // 10.9, 20.8 s) and other equilibria of the same N: n_t law -0.0587 (was -0.0810) at N = 200, T law
+  // -0.0116 (was -0.0048) at N = 400, n_t law -0.0040 (was -0.0035) at N = 800; H_deviation by about
+  // 1e-5 of itself. The polyline ply has several equilibria at a fixed N (likely because the distance
+  // between two polylines is corrugated at the scale of an edge), so the laws' errors scatter by up to 0.02 at
+  // N = 200 .. 400 and by about 5e-4 at N = 800; their gates are at the finest level, with the
+  // envelope below measured on the first path (the second passes it: 0.0024 <= 0.0069 for T).
   registry.add(plectoneme_case(
       "knot/plectoneme-nodal", 15.0, {200, 400, 800}, {200, 400, 800},
       {order_range_gate("H_deviation", 1.0, 2.0,
