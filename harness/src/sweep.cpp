@@ -10,8 +10,7 @@
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/time_budget.hpp"
 #include "rodvv/common/validation.hpp"
-#include "rodvv/harness/order_fit.hpp"
-#include "rodvv/harness/richardson.hpp"
+#include "rodvv/harness/convergence.hpp"
 
 namespace rodvv::harness {
 
@@ -42,47 +41,7 @@ bool gates_an_order(const Case& c) {
 }  // namespace
 
 std::vector<MetricAnalysis> analyse_levels(const Case& c, const std::vector<LevelResult>& levels) {
-  std::vector<MetricAnalysis> analyses;
-  std::vector<double> h;
-  for (const auto& level : levels) h.push_back(level.h);
-  for (const MetricSpec& metric : c.info.metrics) {
-    if (metric.kind == MetricKind::Diagnostic) continue;
-    MetricAnalysis analysis;
-    analysis.metric = metric.name;
-    std::vector<std::optional<double>> errors;
-    for (const auto& level : levels) {
-      const auto found = level.metrics.find(metric.name);
-      errors.push_back(level.failure || found == level.metrics.end() ? std::nullopt
-                                                                      : found->second.error);
-    }
-    analysis.order = fit_order(h, errors, c.fit_levels);
-
-    if (metric.extrapolate) {
-      const std::size_t n = levels.size();
-      if (n < 3) {
-        analysis.richardson_note = "fewer than three levels";
-      } else {
-        const LevelResult& fine = levels[n - 1];
-        const LevelResult& medium = levels[n - 2];
-        const LevelResult& coarse = levels[n - 3];
-        const auto value = [&](const LevelResult& level) -> std::optional<double> {
-          const auto found = level.metrics.find(metric.name);
-          if (level.failure || found == level.metrics.end()) return std::nullopt;
-          return found->second.computed;
-        };
-        if (!value(fine) || !value(medium) || !value(coarse)) {
-          analysis.richardson_note = "a level of the finest three is missing the metric";
-        } else {
-          std::string why_not;
-          analysis.richardson = richardson_gci(
-              {fine.h, medium.h, coarse.h, *value(fine), *value(medium), *value(coarse)}, &why_not);
-          if (!analysis.richardson) analysis.richardson_note = why_not;
-        }
-      }
-    }
-    analyses.push_back(std::move(analysis));
-  }
-  return analyses;
+  return analyse_metrics(c.info.metrics, levels, c.fit_levels);
 }
 
 std::span<const double> sweep_levels(const Case& c, bool extended) {

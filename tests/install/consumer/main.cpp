@@ -1,9 +1,11 @@
-// A downstream project using rodvv's installed references and invariants.
+// A downstream project using rodvv's installed references, invariants, solution-file reader and gates.
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <vector>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/harness/convergence.hpp"
 #include "rodvv/invariants/energy.hpp"
 #include "rodvv/invariants/planar_noether.hpp"
 #include "rodvv/solution_files/solution_file.hpp"
@@ -34,5 +36,32 @@ int main() {
   } catch (const rodvv::InputError& error) {
     std::printf("refused: %s\n", error.what());
   }
+
+  // The project's own "solver" (the composite trapezoidal rule for the integral of e^x over [0, 1], exact
+  // e - 1) at N = 8 .. 64, gated with rodvv's order fit and gates: order 2 passes (with its resolution
+  // gate beside it), a claimed order 1 fails.
+  namespace h = rodvv::harness;
+  h::CaseInfo info;
+  info.name = "consumer/trapezoid";
+  info.resolution = {"N", "panels", h::ResolutionScale::Count, {8, 16, 32, 64}, {}, 0.0};
+  info.metrics = {{"integral", h::MetricKind::Error, "", "trapezoidal rule for the integral of e^x on [0, 1]",
+                   true, 2.0}};
+  std::vector<h::LevelResult> levels;
+  for (int n : {8, 16, 32, 64}) {
+    double sum = 0.5 * (1.0 + std::exp(1.0));
+    for (int k = 1; k < n; ++k) sum += std::exp(double(k) / n);
+    h::LevelResult level;
+    level.level = n;
+    level.h = 1.0 / n;
+    const double exact = std::exp(1.0) - 1.0, computed = sum / n;
+    level.metrics["integral"] = {computed, exact, std::abs(computed - exact)};
+    levels.push_back(level);
+  }
+  const auto right = h::evaluate_convergence(info, levels, {h::order_gate("integral", 2.0, "trapezoidal rule")});
+  const auto wrong = h::evaluate_convergence(info, levels, {h::order_gate("integral", 1.0, "a wrong claim")});
+  std::printf("trapezoid: order %.4f, %zu gates, %s; claimed order 1: %s\n",
+              *right.analyses[0].order.least_squares, right.gates.size(), right.passed() ? "pass" : "FAIL",
+              wrong.passed() ? "pass" : "fails as it must");
+  ok = ok && right.passed() && right.gates.size() == 2 && !wrong.passed();
   return ok ? 0 : 1;
 }

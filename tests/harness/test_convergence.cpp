@@ -1,0 +1,111 @@
+// evaluate_convergence (convergence.hpp): a convergence study gated without a case gives the verdict a
+// case's sweep gives on the same numbers, can fail, and refuses malformed studies by name.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "rodvv/common/errors.hpp"
+#include "rodvv/harness/convergence.hpp"
+#include "rodvv/harness/registry.hpp"
+#include "rodvv/harness/sweep.hpp"
+
+namespace {
+
+using namespace rodvv::harness;
+
+// Errors 0.3 h^2 (1 + h) of a quantity of size 2 at h = 1/8 .. 1/64.
+CaseInfo study_info() {
+  CaseInfo info;
+  info.name = "user/second-order";
+  info.resolution = {"N", "elements", ResolutionScale::Count, {8, 16, 32, 64}, {}, 0.0};
+  info.metrics = {{"tip", MetricKind::Error, "", "tip deflection", true, 2.0}};
+  return info;
+}
+
+std::vector<LevelResult> study_levels(double order) {
+  std::vector<LevelResult> levels;
+  for (double n : {8.0, 16.0, 32.0, 64.0}) {
+    LevelResult level;
+    level.level = n;
+    level.h = 1.0 / n;
+    const double error = 0.3 * std::pow(level.h, order) * (1.0 + level.h);
+    level.metrics["tip"] = {2.0 + error, 2.0, error};
+    levels.push_back(level);
+  }
+  return levels;
+}
+
+TEST(EvaluateConvergence, SecondOrderStudyPassesItsOrderAndResolutionGates) {
+  const auto result = evaluate_convergence(study_info(), study_levels(2.0), {order_gate("tip", 2.0, "theory")});
+  ASSERT_EQ(result.gates.size(), 2u);  // the order gate and the resolution gate added beside it
+  EXPECT_EQ(result.gates[1].name, resolution_gate("tip").name);
+  EXPECT_TRUE(result.passed()) << result.gates[0].reason << " | " << result.gates[1].reason;
+  ASSERT_EQ(result.analyses.size(), 1u);
+  EXPECT_NEAR(*result.analyses[0].order.least_squares, 2.0, 0.1);
+  EXPECT_TRUE(result.analyses[0].richardson.has_value()) << result.analyses[0].richardson_note.value_or("");
+}
+
+TEST(EvaluateConvergence, FirstOrderStudyFailsASecondOrderGate) {
+  const auto result = evaluate_convergence(study_info(), study_levels(1.0), {order_gate("tip", 2.0, "claimed")});
+  EXPECT_FALSE(result.gates[0].passed);
+  EXPECT_FALSE(result.passed());
+}
+
+TEST(EvaluateConvergence, UnresolvedStudyFailsItsResolutionGate) {
+  auto levels = study_levels(2.0);
+  for (auto& level : levels) level.metrics["tip"].error = *level.metrics["tip"].error * 1e4;  // 53 .. 0.74 of 2
+  const auto result = evaluate_convergence(study_info(), levels, {order_gate("tip", 2.0, "theory")});
+  EXPECT_TRUE(result.gates[0].passed);   // the order alone is right
+  EXPECT_FALSE(result.gates[1].passed);  // but the error is not small against the quantity
+}
+
+TEST(EvaluateConvergence, SameVerdictAsTheCasesSweep) {
+  const Case* c = default_registry().find("pendulum/libration-90/rk4");
+  ASSERT_NE(c, nullptr);
+  const SweepResult sweep = run_sweep(*c, c->info.parameters, c->info.resolution.default_levels);
+  std::vector<GateSpec> gates;
+  for (const auto& gate : c->gates)
+    if (gate.kind != GateKind::Regression) gates.push_back(gate);
+  const SweepResult alone = evaluate_convergence(sweep.info, sweep.levels, gates, c->fit_levels);
+  ASSERT_EQ(alone.gates.size(), sweep.gates.size());
+  for (std::size_t i = 0; i < sweep.gates.size(); ++i) {
+    EXPECT_EQ(alone.gates[i].name, sweep.gates[i].name);
+    EXPECT_EQ(alone.gates[i].passed, sweep.gates[i].passed);
+    EXPECT_EQ(alone.gates[i].measured, sweep.gates[i].measured);  // bit for bit: the same functions
+  }
+}
+
+std::string input_error_parameter(const std::function<void()>& call) {
+  try {
+    call();
+  } catch (const rodvv::InputError& error) {
+    return error.parameter();
+  }
+  return "(no InputError)";
+}
+
+TEST(EvaluateConvergence, MalformedStudiesAreInputErrorsNamingTheArgument) {
+  const auto gate = order_gate("tip", 2.0, "theory");
+  EXPECT_EQ(input_error_parameter([&] { evaluate_convergence(study_info(), {}, {gate}); }), "levels");
+  auto reversed = study_levels(2.0);
+  std::swap(reversed[0], reversed[3]);
+  EXPECT_EQ(input_error_parameter([&] { evaluate_convergence(study_info(), reversed, {gate}); }), "levels");
+  auto zero_h = study_levels(2.0);
+  zero_h[3].h = 0.0;
+  EXPECT_EQ(input_error_parameter([&] { evaluate_convergence(study_info(), zero_h, {gate}); }), "levels");
+  EXPECT_EQ(input_error_parameter([&] {
+              evaluate_convergence(study_info(), study_levels(2.0), {order_gate("root", 2.0, "no such metric")});
+            }),
+            "gates");
+  GateSpec regression = gate;
+  regression.kind = GateKind::Regression;
+  EXPECT_EQ(input_error_parameter([&] { evaluate_convergence(study_info(), study_levels(2.0), {regression}); }),
+            "gates");
+  EXPECT_EQ(input_error_parameter([&] { evaluate_convergence(study_info(), study_levels(2.0), {gate}, 1); }),
+            "fit_levels");
+}
+
+}  // namespace
