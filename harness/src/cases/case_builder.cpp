@@ -46,6 +46,19 @@ Window load_window(std::string length, double low, double high, std::string why)
           }};
 }
 
+Window weight_window(double low, double high, std::string why) {
+  std::string statement = fmt::format("w L^3 / EI {} ({})", interval_text(low, high), why);
+  return {statement, [=](const Parameters& p) {
+            const double w = parameter_value(p, "w"), L = parameter_value(p, "L"), EI = parameter_value(p, "EI");
+            const double weight = w * L * L * L / EI;
+            if (!(weight >= low && weight <= high))
+              throw InputError("w", fmt::format("invalid parameter 'w' = {}: the weight w L^3 / EI = {} (L = {}, EI = {}) "
+                                                "must be {} ({})",
+                                                format_value(w), format_value(weight), format_value(L),
+                                                format_value(EI), interval_text(low, high), why));
+          }};
+}
+
 double helix_turns(const Parameters& p) {
   return parameter_value(p, "L") * std::sin(parameter_value(p, "pitch_angle")) /
          (2.0 * std::numbers::pi * parameter_value(p, "radius"));

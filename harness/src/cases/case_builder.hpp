@@ -58,6 +58,11 @@ Window ratio_window(std::string numerator, std::string denominator, double low, 
 // that sets the lever arm (L, R).
 Window load_window(std::string length, double low, double high, std::string why);
 
+// The weight a case's levels resolve, w L^3 / EI in [low, high] (w: weight per unit length, from the
+// parameters w, L and EI; measured per case, with the reason beyond its ends in `why`); InputError
+// naming w otherwise.
+Window weight_window(double low, double high, std::string why);
+
 // The swing t_end sqrt(g / length) a dynamic case's time levels resolve, at most max_swing (measured per
 // case); InputError naming t_end otherwise.
 Window swing_window(double length, double max_swing);
