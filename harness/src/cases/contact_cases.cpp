@@ -32,6 +32,7 @@
 
 #include <fmt/format.h>
 
+#include "case_builder.hpp"
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
 #include "rodvv/harness/registry.hpp"
@@ -527,19 +528,23 @@ Case soft_case() {
 // ---- propped cantilever -----------------------------------------------------------------------
 
 LevelOutput run_propped_level(e2d::Scheme scheme, const Parameters& p, double level) {
-  const double w = parameter_value(p, "w");
+  const double L = parameter_value(p, "L"), EI = parameter_value(p, "EI"), w = parameter_value(p, "w");
   const std::size_t n = element_count(level);
   e2d::Problem problem;
+  problem.length = L;
+  problem.bending_stiffness = [EI](double) { return EI; };
   problem.start.support = e2d::Support::Clamped;
   problem.potential.value = [w](double, double y) { return w * y; };
   problem.potential.gradient = [w](double, double) { return Eigen::Vector2d(0.0, w); };
   e2d::Obstacle prop = e2d::floor_at(0.0);
-  prop.s_min = 1.0;  // acts on the tip node only
+  prop.s_min = L - 0.5 * L / double(n);  // acts on the tip node only
   const auto c = e2d::solve_static_contact(problem, {scheme, n}, {prop});
   LevelOutput out;
+  // In units of w L (the reaction) and w L^2 (the moment EI kappa).
   const double R = c.contacts.empty() ? 0.0 : c.contacts.front().force;
-  out.metrics["tip_reaction"] = {R / w, 3.0 / 8.0, std::abs(R / w - 3.0 / 8.0)};
-  out.metrics["root_moment"] = {-c.rod.kappa[0] / w, 1.0 / 8.0, std::abs(-c.rod.kappa[0] / w - 1.0 / 8.0)};
+  const double reaction = R / (w * L), moment = -EI * c.rod.kappa[0] / (w * L * L);
+  out.metrics["tip_reaction"] = {reaction, 3.0 / 8.0, std::abs(reaction - 3.0 / 8.0)};
+  out.metrics["root_moment"] = {moment, 1.0 / 8.0, std::abs(moment - 1.0 / 8.0)};
   std::vector<double> force(c.rod.nodes(), 0.0);
   force.back() = R;
   out.series.push_back(thin_series("shape|rod", "x", "y", c.rod.x, c.rod.y));
@@ -555,16 +560,19 @@ Case propped_case(e2d::Scheme scheme) {
   c.info.group = "elastica-contact/propped-cantilever";
   c.info.title = "propped cantilever under self-weight (frictionless tip prop), " + id;
   c.info.physics =
-      "Cantilever clamped horizontally at s = 0, L = EI = 1, weight w per length (V = w y), a frictionless "
-      "unilateral prop y >= 0 at s = L only.";
+      "Cantilever clamped horizontally at s = 0, length L, bending stiffness EI, weight w per length (V = w y), "
+      "a frictionless unilateral prop y >= 0 at s = L only.";
   c.info.reference = "Euler-Bernoulli small deflection: tip reaction R = 3wL/8, root moment wL^2/8 "
-                     "(nonlinear correction ~ (wL^3/EI)^2 = 1e-6 relative at w = 1e-3)";
+                     "(nonlinear correction ~ (wL^3/EI)^2 = 1e-6 relative at the default wL^3/EI = 1.07e-3)";
   c.info.citation = "ALGORITHMS.md §4.3 (a); Timoshenko & Gere, propped cantilever";
   c.info.method = scheme_text(scheme);
-  c.info.parameters = {make_parameter("w", 1e-3, 0.0, 1e-2, true, false, "force/length", "weight per unit length")};
+  // L and EI not 1 (so that a mix-up of them or their powers shows); w L^3 / EI = 1.07e-3.
+  c.info.parameters = {make_parameter("L", 1.7, 1e-6, 1e6, false, false, "length", "rod length"),
+                       make_parameter("EI", 2.3, 1e-6, 1e12, false, false, "force length^2", "bending stiffness"),
+                       make_parameter("w", 5e-4, 0.0, 1e12, true, false, "force/length", "weight per unit length")};
   c.info.resolution = {"N", "number of elements", ResolutionScale::Count, {8, 16, 32, 64}, {8, 16, 32, 64, 128, 256}};
-  c.info.metrics = {error_metric("tip_reaction", "wL", "R / w vs 3/8"),
-                    error_metric("root_moment", "wL^2", "|M(0)| / w vs 1/8")};
+  c.info.metrics = {error_metric("tip_reaction", "wL", "R / (wL) vs 3/8"),
+                    error_metric("root_moment", "wL^2", "|M(0)| / (wL^2) vs 1/8")};
   // Measured at N = 64 (2026-11-21): polygon 4.58e-5 both, arcs 2.29e-5 both; order 2.00.
   const double at64 = scheme == e2d::Scheme::Polygon ? 4.5771e-5 : 2.2890e-5;
   for (const char* metric : {"tip_reaction", "root_moment"}) {
@@ -572,6 +580,9 @@ Case propped_case(e2d::Scheme scheme) {
     c.gates.push_back(measured_bound(metric, at64, 1.0 / 64, 2.0));
   }
   c.run_level = [scheme](const Parameters& p, double level) { return run_propped_level(scheme, p, level); };
+  // The range of w at L = EI = 1 measured to pass before L and EI were parameters (2026-11-21).
+  cases::require(c, cases::weight_window(0.0, 1e-2, "where the small-deflection reference's (w L^3 / EI)^2 "
+                                                    "stays below the levels' discretisation error"));
   return c;
 }
 
