@@ -403,13 +403,17 @@ void add_shooting_comparison(LevelOutput& output, const PlanarRodSolution& solut
 
 enum class Variation { Tapered, Curved };
 
-e2d::Problem drift_problem(Variation variation, double P, double slope) {
+// Length L, root stiffness EI, tip load P; the dimensionless gradient g: EI(s) = EI (1 + g s / L)
+// (tapered) or kappa_hat(s) = (0.3 + g s / L) / L at constant EI (curved).
+e2d::Problem drift_problem(Variation variation, double L, double EI, double P, double slope) {
   e2d::Problem problem;
-  problem.length = 1.0;
-  if (variation == Variation::Tapered)
-    problem.bending_stiffness = [slope](double s) { return 1.0 + slope * s; };
-  else
-    problem.natural_curvature = [slope](double s) { return 0.3 + slope * s; };
+  problem.length = L;
+  if (variation == Variation::Tapered) {
+    problem.bending_stiffness = [EI, L, slope](double s) { return EI * (1.0 + slope * s / L); };
+  } else {
+    problem.bending_stiffness = [EI](double) { return EI; };
+    problem.natural_curvature = [L, slope](double s) { return (0.3 + slope * s / L) / L; };
+  }
   problem.start.support = e2d::Support::Clamped;
   problem.end.load.force_y = -P;
   return problem;
@@ -417,14 +421,15 @@ e2d::Problem drift_problem(Variation variation, double P, double slope) {
 
 LevelOutput run_drift_level(Variation variation, e2d::Scheme scheme, const Parameters& parameters,
                             double level, ShootingReference& shooting) {
+  const double L = parameter_value(parameters, "L"), EI = parameter_value(parameters, "EI");
   const double P = parameter_value(parameters, "P");
   const double slope = parameter_value(parameters, "gradient");
-  const e2d::Problem problem = drift_problem(variation, P, slope);
+  const e2d::Problem problem = drift_problem(variation, L, EI, P, slope);
   std::function<double(double)> d_ei, d_kappa_hat;
   if (variation == Variation::Tapered)
-    d_ei = [slope](double) { return slope; };
+    d_ei = [rate = EI * slope / L](double) { return rate; };
   else
-    d_kappa_hat = [slope](double) { return slope; };
+    d_kappa_hat = [rate = slope / (L * L)](double) { return rate; };
   e2d::SolverOptions options;
   options.load_steps = 2;
   const std::size_t n = element_count(level);
@@ -432,11 +437,14 @@ LevelOutput run_drift_level(Variation variation, e2d::Scheme scheme, const Param
 
   const auto check = invariants::planar_noether_drift_check(solution, d_ei, d_kappa_hat);
   LevelOutput output;
-  add_shooting_comparison(output, solution, shooting.sampled(problem, {P, slope}, n, options.load_steps));
-  // Error of the measured drift H(s) - H(0) against its predicted integral (PHYSICS.md §1.3).
-  // Size: the problem's force scale P + EI(0)/L^2 (L = EI(0) = 1 here), which H and its drift are made of.
-  output.metrics["drift_residual"] = {check.max_abs_residual, 0.0, check.max_abs_residual, P + 1.0};
-  output.metrics["H_drift"] = {check.max_abs_drift, std::nullopt, std::nullopt};
+  add_shooting_comparison(output, solution, shooting.sampled(problem, {L, EI, P, slope}, n, options.load_steps));
+  // Error of the measured drift H(s) - H(0) against its predicted integral (PHYSICS.md §1.3), in units
+  // of the force EI(0)/L^2. Size: the problem's force scale P + EI(0)/L^2, which H and its drift are
+  // made of.
+  const double force = EI / (L * L);
+  const double residual = check.max_abs_residual / force;
+  output.metrics["drift_residual"] = {residual, 0.0, residual, P / force + 1.0};
+  output.metrics["H_drift"] = {check.max_abs_drift / force, std::nullopt, std::nullopt};
   const auto h = invariants::planar_noether_h(solution);
   const auto predicted = invariants::planar_noether_predicted_drift(solution, d_ei, d_kappa_hat);
   std::vector<double> measured(h.size());
@@ -631,39 +639,47 @@ void register_elastica_cases(Registry& registry) {
       const bool tapered = variation == Variation::Tapered;
       const std::string motion = tapered ? "tapered" : "curved";
       auto shooting = std::make_shared<ShootingReference>();
-      registry.add(make_case(
+      Case c = make_case(
           fmt::format("elastica/{}/{}", motion, id), "elastica/" + motion,
           fmt::format("{} cantilever: shape vs shooting, measured H(s) drift vs predicted, {}",
-                      tapered ? "tapered (EI = 1 + g s)" : "naturally curved (kappa_hat = 0.3 + g s)", id),
+                      tapered ? "tapered (EI(s) = EI (1 + g s/L))" : "naturally curved (kappa_hat = (0.3 + g s/L)/L)",
+                      id),
           scheme,
-          tapered ? "Cantilever with bending stiffness EI(s) = 1 + g s under a vertical dead tip load P: "
-                    "the Lagrangian depends on s, so H is not conserved."
-                  : "Cantilever with natural curvature kappa_hat(s) = 0.3 + g s under a vertical dead tip "
-                    "load P: the Lagrangian depends on s, so H is not conserved.",
+          tapered ? "Cantilever of length L with bending stiffness EI(s) = EI (1 + g s / L) under a vertical dead "
+                    "tip load P: the Lagrangian depends on s, so H is not conserved."
+                  : "Cantilever of length L and stiffness EI with natural curvature kappa_hat(s) = (0.3 + g s / L) "
+                    "/ L under a vertical dead tip load P: the Lagrangian depends on s, so H is not conserved.",
           std::string("shape: shooting solution of the same boundary-value problem (RKF78 at abs = rel = "
                       "1e-13, Newton with variational equations; errors ~1e-12); ") +
               (tapered ? "dH/ds = -1/2 EI'(s) theta'^2 (PHYSICS.md §1.3(a); the slides' sign is wrong)"
                        : "dH/ds = +EI kappa_hat'(s) (theta' - kappa_hat) (PHYSICS.md §1.3(b); the slides' "
                          "sign is wrong)"),
           "Noether's theorem with explicit s-dependence, dH/ds = -dL/ds; PHYSICS.md §1.3",
-          // P up to 60: measured to pass at every gradient for the tapered rod; beyond (P = 150
-          // tapered, 100 curved) the shooting reference leaves the rod's equilibrium branch. The
-          // tapered gradient up to 8 (EI from 1 to 9 along the rod): at 10 the arcs' drift residual
-          // has order 1.89 on the default levels; 8 passes at P = 0.03 and 60 (2026-11-26).
-          {make_parameter("P", 3.0, 0.0, 60.0, true, false, "force", "tip load (L = 1)"),
+          // At L = 1.7, EI = 2.3 (so that a mix-up of L, EI or their powers shows) and P = 2.4: the load
+          // P L^2 / EI = 3.02. The tapered gradient up to 8 (EI from EI to 9 EI along the rod): at 10 the
+          // arcs' drift residual has order 1.89 on the default levels; 8 passes at P L^2/EI = 0.03 and 60
+          // (2026-11-26).
+          {make_parameter("L", kDefaultLength, 1e-6, 1e6, false, false, "length", "rod length"),
+           make_parameter("EI", kDefaultStiffness, 1e-6, 1e12, false, false, "force length^2",
+                          tapered ? "bending stiffness at the root, EI(0)" : "bending stiffness"),
+           make_parameter("P", 2.4, 0.0, 1e12, true, false, "force", "tip load"),
            make_parameter("gradient", tapered ? 0.5 : 0.2, -0.9, tapered ? 8.0 : 10.0, true, false, "",
-                          tapered ? "g in EI = 1 + g s" : "g in kappa_hat = 0.3 + g s")},
+                          tapered ? "g in EI(s) = EI (1 + g s / L)" : "g in kappa_hat = (0.3 + g s / L) / L")},
           elastica_level_plan(motion, id),
           {error_metric("tip_x", "L", "tip x vs the shooting solution", true),
            error_metric("tip_y", "L", "tip y vs the shooting solution", true),
            shooting_shape_metric(),
-           error_metric("drift_residual", "force",
+           error_metric("drift_residual", "EI/L^2",
                         "max |(H(s) - H(0)) - integral of the predicted dH/ds| over nodes", false),
-           {"H_drift", MetricKind::Diagnostic, "force", "max |H(s) - H(0)|: how far H moves", false,
+           {"H_drift", MetricKind::Diagnostic, "EI/L^2", "max |H(s) - H(0)|: how far H moves", false,
             std::nullopt}},
           [variation, scheme, shooting](const Parameters& p, double level) {
             return run_drift_level(variation, scheme, p, level, *shooting);
-          }));
+          });
+      // P L^2 / EI up to 60: measured to pass at every gradient for the tapered rod; beyond (150 tapered,
+      // 100 curved) the shooting reference leaves the rod's equilibrium branch.
+      cases::require(c, cases::load_window("L", 0.0, 60.0, "where the shooting reference follows the rod's branch"));
+      registry.add(std::move(c));
     }
     {
       auto shooting = std::make_shared<ShootingReference>();
