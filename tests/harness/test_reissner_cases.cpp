@@ -120,7 +120,10 @@ TEST(ReissnerGatesHaveTeeth, WrongCriticalLoadOrOrderClaimFails) {
   const auto original = wrong.run_level;
   wrong.run_level = [original](const Parameters& p, double level) {
     LevelOutput out = original(p, level);
-    const double euler = std::numbers::pi * std::numbers::pi, engesser = euler / (1 + euler / parameter_value(p, "GA"));
+    // In the metric's unit EI/L^2: Engesser's P L^2/EI = pi^2 / (1 + pi^2 EI / (GA L^2)).
+    const double L = parameter_value(p, "L"), EI = parameter_value(p, "EI");
+    const double euler = std::numbers::pi * std::numbers::pi,
+                 engesser = euler / (1 + euler * EI / (parameter_value(p, "GA") * L * L));
     auto& s = out.metrics["P_cr"];
     s = {s.computed, engesser, std::abs(s.computed - engesser)};
     return out;

@@ -106,10 +106,12 @@ Case base_case(std::string name, std::string group, std::string title, e2d::Sche
 // ---- bar in tension ---------------------------------------------------------------------------
 
 LevelOutput run_tension_level(e2d::Scheme scheme, const Parameters& parameters, double level) {
-  const double L = 1.0, F = parameter_value(parameters, "F"), EA = parameter_value(parameters, "EA");
+  const double L = parameter_value(parameters, "L"), EI = parameter_value(parameters, "EI");
+  const double F = parameter_value(parameters, "F"), EA = parameter_value(parameters, "EA");
   const double GA = parameter_value(parameters, "GA"), angle = parameter_value(parameters, "angle");
   e2d::Problem problem;
   problem.length = L;
+  problem.bending_stiffness = [EI](double) { return EI; };
   problem.start.support = e2d::Support::Clamped;
   problem.start.angle = angle;
   problem.end.load.force_x = F * std::cos(angle);
@@ -124,7 +126,7 @@ LevelOutput run_tension_level(e2d::Scheme scheme, const Parameters& parameters, 
   LevelOutput output;
   const double error = std::hypot(solution.x.back() - stretched * std::cos(angle),
                                   solution.y.back() - stretched * std::sin(angle));
-  // Sized by the larger of L and the stretched length, and by the larger of |F| and EI / L^2 = 1 (the
+  // Sized by the larger of L and the stretched length, and by the larger of |F| and EI / L^2 (the
   // residual's force scale): the round-off of a sum of N chords, and of a force balance, follow them (the
   // gates are relative).
   output.metrics["end_displacement"] = {std::hypot(solution.x.back(), solution.y.back()) - L,
@@ -133,7 +135,7 @@ LevelOutput run_tension_level(e2d::Scheme scheme, const Parameters& parameters, 
   for (std::size_t e = 0; e < solution.edge_axial_force.size(); ++e)
     force_error = std::max({force_error, std::abs(solution.edge_axial_force[e] - F),
                             std::abs(solution.edge_shear_force[e])});
-  output.metrics["edge_force_error"] = {force_error, 0.0, force_error, std::max(std::abs(F), 1.0)};
+  output.metrics["edge_force_error"] = {force_error, 0.0, force_error, std::max(std::abs(F), EI / (L * L))};
   add_noether(output, solution);
   std::vector<double> stretch(solution.s.size());
   for (std::size_t i = 0; i < stretch.size(); ++i) stretch[i] = solution.axial_force[i] / EA;
@@ -149,9 +151,12 @@ Case tension_case(e2d::Scheme scheme) {
       "Bar clamped at s = 0 at an angle, axial dead force F at s = L, EA and GA finite: a straight "
       "state with n.t = F, n.N = 0, stretch F/EA.";
   c.info.reference = "r(L) = (L + F L / EA) t(angle), exact for any N (n constant, C n exact per element)";
-  c.info.parameters = {make_parameter("F", 2.0, -1e6, 1e6, true, true, "force", "axial end force (> 0 tension)"),
+  // L and EI not 1, so that a mix-up of them shows (EI sets only the solver's force scale here).
+  c.info.parameters = {make_parameter("L", 1.7, 0.0, 1e6, true, false, "length", "bar length"),
+                       stiffness("EI", 2.3, "bending stiffness"),
+                       make_parameter("F", 2.0, -1e6, 1e6, true, true, "force", "axial end force (> 0 tension)"),
                        stiffness("EA", 25.0, "axial stiffness"), stiffness("GA", 3.0, "shear stiffness"),
-                       make_parameter("angle", 0.4, -kPi, kPi, false, false, "rad", "clamp angle (L = 1)")};
+                       make_parameter("angle", 0.4, -kPi, kPi, false, false, "rad", "clamp angle")};
   // A stretch 1 + F/EA in (0, 2001]: at F/EA = 4e4 the arcs' Newton fails (line search at load factor
   // 0.98); 2000 passes on both schemes (measured 2026-11-26).
   require_window(c, "F / EA in (-1, 2000] (a positive stretch 1 + F/EA; at most 2001, where the levels converge)",
@@ -365,16 +370,23 @@ Case cantilever_case(e2d::Scheme scheme) {
 
 // ---- critical load ----------------------------------------------------------------------------
 
+struct Column {
+  double L, EI, EA, GA;
+};
+
 // theta(0)^2 on the first-mode branch at a load (0 if the column stays straight).
-double end_rotation_squared(e2d::Scheme scheme, std::size_t n, double load, double EA, double GA) {
+double end_rotation_squared(e2d::Scheme scheme, std::size_t n, double load, const Column& column) {
+  const auto [L, EI, EA, GA] = column;
   e2d::Problem problem;
+  problem.length = L;
+  problem.bending_stiffness = [EI](double) { return EI; };
   problem.start.support = e2d::Support::Pinned;
   problem.end.support = e2d::Support::Sliding;
   problem.end.load.force_x = -load;
   problem.axial_stiffness = EA;
   problem.shear_stiffness = GA;
   e2d::InitialGuess guess;
-  guess.theta = [](double s) { return 0.2 * std::cos(kPi * s); };
+  guess.theta = [L](double s) { return 0.2 * std::cos(kPi * s / L); };
   e2d::SolverOptions options;
   options.tolerance = 1e-13;
   const PlanarRodSolution solution = e2d::solve_static(problem, {scheme, n}, options, guess);
@@ -383,10 +395,10 @@ double end_rotation_squared(e2d::Scheme scheme, std::size_t n, double load, doub
 
 // Pitchfork: theta0^2 is linear in P near the bifurcation; the zero of the line through
 // P0 (1 + delta) and P0 (1 + 2 delta) is the discrete critical load up to ~2 delta^2 relative.
-double bifurcation_intercept(e2d::Scheme scheme, std::size_t n, double p0, double delta, double EA, double GA) {
+double bifurcation_intercept(e2d::Scheme scheme, std::size_t n, double p0, double delta, const Column& column) {
   const double p1 = p0 * (1 + delta), p2 = p0 * (1 + 2 * delta);
-  const double a1 = end_rotation_squared(scheme, n, p1, EA, GA);
-  const double a2 = end_rotation_squared(scheme, n, p2, EA, GA);
+  const double a1 = end_rotation_squared(scheme, n, p1, column);
+  const double a2 = end_rotation_squared(scheme, n, p2, column);
   if (!(a2 > a1 && a1 > 0.0))
     throw SolverError("elastica2d-" + std::string(e2d::scheme_id(scheme)),
                       "no post-buckled branch above the trial loads", 0, 0.0);
@@ -394,16 +406,18 @@ double bifurcation_intercept(e2d::Scheme scheme, std::size_t n, double p0, doubl
 }
 
 LevelOutput run_critical_level(e2d::Scheme scheme, const Parameters& parameters, double level) {
-  const double EA = parameter_value(parameters, "EA"), GA = parameter_value(parameters, "GA");
-  const double exact = ref::reissner_pinned_critical_load(1.0, 1.0, EA, GA);
+  const Column column{parameter_value(parameters, "L"), parameter_value(parameters, "EI"),
+                      parameter_value(parameters, "EA"), parameter_value(parameters, "GA")};
+  const double exact = ref::reissner_pinned_critical_load(column.L, column.EI, column.EA, column.GA);
   const std::size_t n = element_count(level);
   // Three passes, each from the previous intercept: delta = 1e-2 from the continuum load (above the
   // discrete one, which differs by O(1e-3) at N = 16; intercept ~2e-4 off), then 2e-3 (~1e-5 off),
   // then 2e-4 (~1e-7 relative, far below the discretisation error ~ 5e-5 at N = 128).
   double discrete = exact;
-  for (double delta : {1e-2, 2e-3, 2e-4}) discrete = bifurcation_intercept(scheme, n, discrete, delta, EA, GA);
+  for (double delta : {1e-2, 2e-3, 2e-4}) discrete = bifurcation_intercept(scheme, n, discrete, delta, column);
   LevelOutput output;
-  output.metrics["P_cr"] = error_sample(discrete, exact);
+  const double force = column.EI / (column.L * column.L);  // the unit of P_cr
+  output.metrics["P_cr"] = error_sample(discrete / force, exact / force);
   return output;
 }
 
@@ -418,8 +432,10 @@ Case critical_case(e2d::Scheme scheme) {
   c.info.reference =
       "P (1 + P (1/GA - 1/EA)) = pi^2 EI/L^2 (linearised Reissner column; Haringx's formula for "
       "EA = inf; references/reissner.hpp)";
-  c.info.parameters = {stiffness("EA", 50.0, "axial stiffness (L = EI = 1)"),
-                       stiffness("GA", 20.0, "shear stiffness")};
+  // L and EI not 1 (so that a mix-up of them or their powers shows): EA L^2/EI = 50.3, GA L^2/EI = 20.1.
+  c.info.parameters = {make_parameter("L", 1.7, 0.0, 1e6, true, false, "length", "column length"),
+                       stiffness("EI", 2.3, "bending stiffness"), stiffness("EA", 40.0, "axial stiffness"),
+                       stiffness("GA", 16.0, "shear stiffness")};
   // GA <= EA: the first-mode branch then leaves the straight column upwards in P (supercritical), which
   // the intercept of theta0^2 from two loads just above the critical one needs (measured, both schemes:
   // GA = EA passes at EA = 15 .. 1e12; at EA = 50, GA = 85 and 100 .. 1e12 there is no post-buckled
@@ -435,9 +451,9 @@ Case critical_case(e2d::Scheme scheme) {
   });
   c.info.resolution = {"N", "number of elements", ResolutionScale::Count, {16, 32, 64, 128},
                        {16, 32, 64, 128, 256, 512}};
-  c.info.metrics = {error_metric("P_cr", "force", "discrete bifurcation load vs the closed form")};
+  c.info.metrics = {error_metric("P_cr", "EI/L^2", "discrete bifurcation load vs the closed form")};
   c.gates = {order_gate("P_cr", 2.0, "the discrete bifurcation load converges at second order"),
-             measured_bound("P_cr", scheme == e2d::Scheme::Polygon ? 3.36e-4 : 3.35e-4, 1.0 / 128)};
+             measured_bound("P_cr", scheme == e2d::Scheme::Polygon ? 3.362e-4 : 3.352e-4, 1.0 / 128)};
   c.run_level = [scheme](const Parameters& p, double level) { return run_critical_level(scheme, p, level); };
   return c;
 }
