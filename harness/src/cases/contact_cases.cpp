@@ -190,6 +190,41 @@ void check_regime(Regime r, const Parameters& p) {
                                                regime_interval_text(r, a)));
 }
 
+// The part of the point regime a point case honours, from the touch (0) to the transition (1), and the
+// widest wall gap. Measured 2026-11-27 over wall_gap 0.03 .. 0.3 and fractions 0.02 .. 1 (rodvv run at
+// each): below 0.1 the curvature step's order is pre-asymptotic on the default levels (0.56 .. 0.88 at 0.02
+// and 0.05); at the transition the H spread's O(h) part vanishes (order 2.04) and at 0.8 - 0.9 the
+// curvature step is no longer resolved at wall_gap 0.3 (0.111 of its size) - the walls and the ring hold
+// to 0.6. The condensed LCP paths and the post stop converging earlier ("Newton with 2 active contacts did
+// not converge"): the LCP paths hold to 0.4 (fail at 0.6, wall_gap 0.3), the post to 0.4 at wall_gap <=
+// 0.15 (fails at 0.6 from wall_gap 0.12, at 0.2 at wall_gap 0.3). Below wall_gap 0.03 the coarsest level's
+// Newton stops ("1 active contact did not converge", wall_gap 0.01 .. 0.025, fractions 0.25 .. 0.6).
+struct PointWindow {
+  double low = 0.1, high = 0.6;
+  double min_wall_gap = 0.03, max_wall_gap = 0.3;
+};
+PointWindow point_window(CondensedLcp lcp, Ceiling ceiling) {
+  if (ceiling == Ceiling::Post) return {0.1, 0.4, 0.03, 0.15};
+  if (lcp) return {0.1, 0.4, 0.03, 0.3};
+  return {};
+}
+
+void check_point_window(const PointWindow& w, const Parameters& p) {
+  const double d = parameter_value(p, "shortening"), a = parameter_value(p, "wall_gap");
+  if (!(a >= w.min_wall_gap && a <= w.max_wall_gap))
+    throw InputError("wall_gap", fmt::format("invalid parameter 'wall_gap' = {}: this case is measured to converge "
+                                             "for {} <= wall_gap <= {} (beyond, its Newton stops)",
+                                             format_value(a), w.min_wall_gap, w.max_wall_gap));
+  const auto [touch, transition] = regime_interval(Regime::Point, a);
+  const double lo = touch + w.low * (transition - touch), hi = touch + w.high * (transition - touch);
+  if (!(d >= lo && d <= hi))
+    throw InputError("shortening", fmt::format("invalid parameter 'shortening' = {}: at wall_gap = {} this case "
+                                               "honours {:.6g} <= shortening <= {:.6g}, the fractions {} .. {} of the "
+                                               "point regime from the touch to the transition (where its levels "
+                                               "are asymptotic and its Newton converges)",
+                                               format_value(d), format_value(a), lo, hi, w.low, w.high));
+}
+
 LevelOutput run_cavity_level(e2d::Scheme scheme, Regime regime, const Parameters& p, double level,
                              CondensedLcp lcp = std::nullopt, Ceiling ceiling = Ceiling::Wall) {
   const double d = parameter_value(p, "shortening"), a = parameter_value(p, "wall_gap");
@@ -411,6 +446,13 @@ Case cavity_case(e2d::Scheme scheme, Regime regime, CondensedLcp lcp = std::null
     c.gates.push_back(upper_bound_gate("lcp_residual", 1e-13, GateScope::AllLevels,
                                        pgs ? "PGS sweeps until the residual is <= its tolerance 1e-13 max|b|"
                                            : "Lemke is exact: round-off, below the LCP tolerance 1e-13 max|b|"));
+  }
+  if (regime == Regime::Point) {
+    const PointWindow w = point_window(lcp, ceiling);
+    require_window(c, fmt::format("shortening in the fractions {} .. {} of the point regime, wall_gap in [{}, {}] "
+                                  "(where the levels are asymptotic and Newton converges)",
+                                  w.low, w.high, w.min_wall_gap, w.max_wall_gap),
+                   [w](const Parameters& p) { check_point_window(w, p); });
   }
   if (ceiling == Ceiling::Ring)
     require_window(c, "the ring curves less than the rod at the contact (|kappa_c| >= 1.5 / 5) and holds the pinned ends",
