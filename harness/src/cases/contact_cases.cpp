@@ -191,7 +191,7 @@ void check_regime(Regime r, const Parameters& p) {
 }
 
 // The part of the point regime a point case honours, from the touch (0) to the transition (1), and the
-// widest wall gap. Measured 2026-11-27 over wall_gap 0.03 .. 0.3 and fractions 0.02 .. 1 (rodvv run at
+// widest wall gap. Measured 2026-11-27 over wall_gap 0.01 .. 0.3 and fractions 0.02 .. 1 (rodvv run at
 // each): below 0.1 the curvature step's order is pre-asymptotic on the default levels (0.56 .. 0.88 at 0.02
 // and 0.05); at the transition the H spread's O(h) part vanishes (order 2.04) and at 0.8 - 0.9 the
 // curvature step is no longer resolved at wall_gap 0.3 (0.111 of its size) - the walls and the ring hold
