@@ -24,6 +24,7 @@
 #include <mutex>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -79,14 +80,16 @@ constexpr double kDefaultStiffness = 2.3;
 // for the pinned-pinned, Mattiasson, roll-up and displacement-controlled cases on both schemes (the
 // solver converges in the problem's own units, newton.hpp). At L = 1e-100 the forces EI/L^2
 // overflow in the KKT products; at L = 1e-300 the load itself is inf.
-Parameter length_parameter() {
+// unit_scale false: a case whose load is physical (a weight w, a tip load P), so that L and EI change its
+// dimensionless load and its bounds measured at the defaults no longer apply.
+Parameter length_parameter(bool unit_scale = true) {
   Parameter p = make_parameter("L", kDefaultLength, 1e-6, 1e6, false, false, "length", "rod length");
-  p.unit_scale = true;
+  p.unit_scale = unit_scale;
   return p;
 }
-Parameter stiffness_parameter() {
-  Parameter p = make_parameter("EI", kDefaultStiffness, 1e-6, 1e12, false, false, "force length^2", "bending stiffness");
-  p.unit_scale = true;
+Parameter stiffness_parameter(bool unit_scale = true, std::string description = "bending stiffness") {
+  Parameter p = make_parameter("EI", kDefaultStiffness, 1e-6, 1e12, false, false, "force length^2", std::move(description));
+  p.unit_scale = unit_scale;
   return p;
 }
 
@@ -659,9 +662,8 @@ void register_elastica_cases(Registry& registry) {
           // P L^2 / EI = 3.02. The tapered gradient up to 8 (EI from EI to 9 EI along the rod): at 10 the
           // arcs' drift residual has order 1.89 on the default levels; 8 passes at P L^2/EI = 0.03 and 60
           // (2026-11-26).
-          {make_parameter("L", kDefaultLength, 1e-6, 1e6, false, false, "length", "rod length"),
-           make_parameter("EI", kDefaultStiffness, 1e-6, 1e12, false, false, "force length^2",
-                          tapered ? "bending stiffness at the root, EI(0)" : "bending stiffness"),
+          {length_parameter(false),
+           stiffness_parameter(false, tapered ? "bending stiffness at the root, EI(0)" : "bending stiffness"),
            make_parameter("P", 2.4, 0.0, 1e12, true, false, "force", "tip load"),
            make_parameter("gradient", tapered ? 0.5 : 0.2, -0.9, tapered ? 8.0 : 10.0, true, false, "",
                           tapered ? "g in EI(s) = EI (1 + g s / L)" : "g in kappa_hat = (0.3 + g s / L) / L")},
@@ -700,8 +702,7 @@ void register_elastica_cases(Registry& registry) {
           "Two-Point Boundary-Value Problems (1968) ch. 2",
           // At L = 1.7, EI = 2.3 (as the closed-form cases, so that a mix-up of L, EI or their powers
           // shows), the weight w L^3 / EI = 5.34.
-          {make_parameter("L", kDefaultLength, 1e-6, 1e6, false, false, "length", "rod length"),
-           make_parameter("EI", kDefaultStiffness, 1e-6, 1e12, false, false, "force length^2", "bending stiffness"),
+          {length_parameter(false), stiffness_parameter(false),
            make_parameter("w", 2.5, 0.0, 1e12, true, false, "force/length", "weight per unit length")},
           elastica_level_plan("heavy-cantilever", id), metrics,
           [scheme, shooting](const Parameters& p, double level) {

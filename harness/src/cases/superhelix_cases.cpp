@@ -109,10 +109,11 @@ Parameter unit_length_parameter() {
   p.unit_scale = true;
   return p;
 }
-Parameter stiffness_parameter() {
+// unit_scale false: a case whose load is physical (superhelix/heavy-cantilever's weight w).
+Parameter stiffness_parameter(bool unit_scale = true) {
   Parameter p = make_parameter("EI", kDefaultStiffness, 0.0, 1e12, true, false, "force length^2",
                                "bending stiffness (both axes)");
-  p.unit_scale = true;
+  p.unit_scale = unit_scale;
   return p;
 }
 
@@ -874,8 +875,7 @@ void register_superhelix_cases(Registry& registry) {
         "Maddocks & Dichmann 1994, J. Elasticity 34:83; PHYSICS.md §1.1; seed slides 002",
         // w = 1.4 at L = 1.7, EI = 2.3: w L^3 / EI = 2.99. L and EI are not unit scales here: with w
         // held, they change the weight parameter.
-        {length_parameter(kDefaultLength),
-         make_parameter("EI", kDefaultStiffness, 0.0, 1e12, true, false, "force length^2", "bending stiffness (both axes)"),
+        {length_parameter(kDefaultLength), stiffness_parameter(false),
          make_parameter("w", 1.4, 0.0, 1e12, true, false, "force/length", "weight per unit length rho S g")},
         elements(levels, {8, 16, 32, 64, 128}),
         [] {
