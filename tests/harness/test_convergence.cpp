@@ -3,18 +3,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <functional>
 #include <string>
 #include <vector>
 
-#include "rodvv/common/errors.hpp"
 #include "rodvv/harness/convergence.hpp"
 #include "rodvv/harness/registry.hpp"
 #include "rodvv/harness/sweep.hpp"
+#include "rodvv/testing/input_error.hpp"
 
 namespace {
 
 using namespace rodvv::harness;
+using rodvv::testing::input_error_parameter_of;
 
 // Errors 0.3 h^2 (1 + h) of a quantity of size 2 at h = 1/8 .. 1/64.
 CaseInfo study_info() {
@@ -78,33 +78,24 @@ TEST(EvaluateConvergence, SameVerdictAsTheCasesSweep) {
   }
 }
 
-std::string input_error_parameter(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const rodvv::InputError& error) {
-    return error.parameter();
-  }
-  return "(no InputError)";
-}
-
 TEST(EvaluateConvergence, MalformedStudiesAreInputErrorsNamingTheArgument) {
   const auto gate = order_gate("tip", 2.0, "theory");
-  EXPECT_EQ(input_error_parameter([&] { evaluate_convergence(study_info(), {}, {gate}); }), "levels");
+  EXPECT_EQ(input_error_parameter_of([&] { evaluate_convergence(study_info(), {}, {gate}); }), "levels");
   auto reversed = study_levels(2.0);
   std::swap(reversed[0], reversed[3]);
-  EXPECT_EQ(input_error_parameter([&] { evaluate_convergence(study_info(), reversed, {gate}); }), "levels");
+  EXPECT_EQ(input_error_parameter_of([&] { evaluate_convergence(study_info(), reversed, {gate}); }), "levels");
   auto zero_h = study_levels(2.0);
   zero_h[3].h = 0.0;
-  EXPECT_EQ(input_error_parameter([&] { evaluate_convergence(study_info(), zero_h, {gate}); }), "levels");
-  EXPECT_EQ(input_error_parameter([&] {
+  EXPECT_EQ(input_error_parameter_of([&] { evaluate_convergence(study_info(), zero_h, {gate}); }), "levels");
+  EXPECT_EQ(input_error_parameter_of([&] {
               evaluate_convergence(study_info(), study_levels(2.0), {order_gate("root", 2.0, "no such metric")});
             }),
             "gates");
   GateSpec regression = gate;
   regression.kind = GateKind::Regression;
-  EXPECT_EQ(input_error_parameter([&] { evaluate_convergence(study_info(), study_levels(2.0), {regression}); }),
+  EXPECT_EQ(input_error_parameter_of([&] { evaluate_convergence(study_info(), study_levels(2.0), {regression}); }),
             "gates");
-  EXPECT_EQ(input_error_parameter([&] { evaluate_convergence(study_info(), study_levels(2.0), {gate}, 1); }),
+  EXPECT_EQ(input_error_parameter_of([&] { evaluate_convergence(study_info(), study_levels(2.0), {gate}, 1); }),
             "fit_levels");
 }
 

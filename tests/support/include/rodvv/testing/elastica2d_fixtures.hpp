@@ -18,20 +18,10 @@
 #include "rodvv/solvers/elastica2d/lagrangian.hpp"
 #include "rodvv/solvers/elastica2d/problem.hpp"
 #include "rodvv/solvers/elastica2d/solve_static.hpp"
+#include "rodvv/testing/input_error.hpp"
 #include "rodvv/testing/tolerance.hpp"
 
 namespace rodvv::testing {
-
-// The parameter named by the InputError f throws, or "<no InputError>" if it throws none.
-template <class F>
-std::string input_error_parameter_of(F&& f) {
-  try {
-    f();
-  } catch (const rodvv::InputError& e) {
-    return e.parameter();
-  }
-  return "<no InputError>";
-}
 
 // Least-squares slope of log|error| against log h = log(1/N), negated: the observed order in 1/N.
 inline double observed_order(const std::vector<std::size_t>& levels, const std::vector<double>& errors) {
