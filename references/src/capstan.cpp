@@ -27,6 +27,10 @@ CapstanSolution capstan_with_bending(const Capstan& capstan) {
   const double psi_pull = turn(T_pull);
   // The tension entering the contact on the pulling side, and with e^{mu phi_c} on the holding side.
   const double pulled_in = T_pull - beta + mu * end_force(T_pull);
+  if (!(pulled_in > 0.0))
+    throw InputError("B", "invalid parameter 'B' = " + format_value(capstan.B) + ": the tension entering the contact "
+                              "on the pulling side, T_pull - B / (2 R^2) + mu P_pull = " + format_value(pulled_in) +
+                              ", must be > 0 (the rod is too stiff for the pull to hold it on the cylinder)");
   const auto mismatch = [&](double T_hold) {
     const double held_in = T_hold - beta - mu * end_force(T_hold);
     return held_in - pulled_in * std::exp(mu * (capstan.wrap_angle - turn(T_hold) - psi_pull));
@@ -44,6 +48,8 @@ CapstanSolution capstan_with_bending(const Capstan& capstan) {
   solution.contact_angle = capstan.wrap_angle - solution.hold_turn - solution.pull_turn;
   solution.hold_end_force = end_force(solution.hold_tension);
   solution.pull_end_force = end_force(T_pull);
+  solution.hold_offset = capstan.B / (2.0 * capstan.R * solution.hold_tension);
+  solution.pull_offset = capstan.B / (2.0 * capstan.R * T_pull);
   if (!(solution.contact_angle > 0.0))
     throw InputError("wrap_angle", "invalid parameter 'wrap_angle' = " + format_value(capstan.wrap_angle) +
                                        ": the free spans alone turn by " +

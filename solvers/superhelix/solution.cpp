@@ -11,10 +11,6 @@ namespace rodvv::solvers::superhelix {
 
 SpatialRodSolution make_solution(const RodModel& model, const VecX& q, std::string method) {
   validate(model);
-  if (!model.point_forces.empty())
-    throw InputError("point_forces", "invalid parameter 'point_forces': the Super-Helix solution struct (n(s) from "
-                                     "gravity, the end force and self-contact) does not take forces at the Gauss "
-                                     "points; must be empty");
   const Kinematics kinematics(model, q);
   const std::size_t n = model.elements;
   const double ell = element_length(model);
@@ -25,6 +21,11 @@ SpatialRodSolution make_solution(const RodModel& model, const VecX& q, std::stri
     Vec3 force;
   };
   std::vector<PointForce> contact_forces;
+  // Dead forces at the Gauss points (the contact forces of inverse and frictional statics) likewise.
+  for (std::size_t g = 0; g < model.point_forces.size(); ++g) {
+    const auto& point = kinematics.points()[g];
+    contact_forces.push_back({static_cast<double>(point.element) * ell + point.sigma, model.point_forces[g]});
+  }
   const bool contact = model.self_contact.radius > 0.0;
   if (contact)
     for (const auto& pair : self_contacts(kinematics, model.self_contact)) {
@@ -40,10 +41,9 @@ SpatialRodSolution make_solution(const RodModel& model, const VecX& q, std::stri
     const Mat3 R = kinematics.frame(e, 0.5 * ell);
     const Vec3 r = kinematics.position(e, 0.5 * ell);
     append_station(solution, model, s, r, R, u, u_hat);
-    if (!contact) continue;
     for (const auto& f : contact_forces)  // a force at the station itself counts half
       solution.force_n.back() += (f.s > s ? 1.0 : f.s == s ? 0.5 : 0.0) * f.force;
-    solution.potential.back() += contact_field(kinematics, model.self_contact, e, 0.5 * ell);
+    if (contact) solution.potential.back() += contact_field(kinematics, model.self_contact, e, 0.5 * ell);
   }
   // A sliding clamp's reaction at the tip is carried by every section, as the end force is.
   if (has_tip_guide(model)) {

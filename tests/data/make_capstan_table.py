@@ -7,8 +7,9 @@ theta(x) = 4 atan(e^{x / lambda}), curvature (2 / lambda) sech(x / lambda), lamb
 left where its curvature reaches 1 / R (findroot), which gives its turn psi; the contact ends' point
 forces from the vector jump of n with plane vectors (the normal part of n must vanish inside the
 contact); the contact arc's dT/dphi = mu T integrated by odefun; T_hold by findroot on the mismatch of
-the two contact tensions. Every parameter is the exact binary value of the double printed in its column.
-Run: /usr/bin/python3 tests/data/make_capstan_table.py > tests/data/capstan_reference.csv
+the two contact tensions; each tail's offset from the height of its span's leaving point above the
+tail line (odefun of sin theta) and its turned normal. Every parameter is the exact binary value of the double printed in its column.
+Run (about 9 minutes: odefun at 40 digits along the tails): /usr/bin/python3 tests/data/make_capstan_table.py > tests/data/capstan_reference.csv
 """
 import mpmath as mp
 
@@ -19,13 +20,21 @@ def d(text):
     return mp.mpf(float(text))
 
 
-def span(B, R, T):
-    """Turn psi of a homoclinic span of tail tension T leaving a cylinder of radius R."""
+def span(B, R, T, offset=False):
+    """Turn psi of a homoclinic span of tail tension T leaving a cylinder of radius R (or its tail line's
+    offset from the cylinder: the axis's distance from the line, minus R)."""
     lam = mp.sqrt(B / T)
     start = -float(lam) * mp.acosh(2 * float(R / lam)) * 1.001  # a start in double, refined at 40 digits
     x = mp.findroot(lambda x: 2 / lam * mp.sech(x / lam) - 1 / R, start)  # the rising side, x < 0
     assert x < 0
-    return 4 * mp.atan(mp.exp(x / lam))
+    psi = 4 * mp.atan(mp.exp(x / lam))
+    if not offset:
+        return psi
+    # distance of the leaving point from the tail line: the integral of sin(theta) from the tail (odefun)
+    theta = lambda s: 4 * mp.atan(mp.exp(s / lam))
+    start = x - 60 * lam  # e^-60: the tail line to 40 digits
+    height = mp.odefun(lambda s, y: mp.sin(theta(s)), start, mp.mpf(0))(x)
+    return height + R * mp.cos(psi) - R
 
 
 def contact_tension(T, psi, mu, side):
@@ -69,6 +78,8 @@ def capstan(B, R, mu, phi, T_pull):
         "pull_turn": psi_pull,
         "hold_end_force": contact_tension(T_hold, psi_hold, mu, -1)[1],
         "pull_end_force": P_pull,
+        "hold_offset": span(B, R, T_hold, offset=True),
+        "pull_offset": span(B, R, T_pull, offset=True),
     }
 
 

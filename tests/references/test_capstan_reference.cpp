@@ -49,6 +49,8 @@ TableCheck check_table(double mu_perturbation) {
     if (name == "pull_turn") actual = solution.pull_turn;
     if (name == "hold_end_force") actual = solution.hold_end_force;
     if (name == "pull_end_force") actual = solution.pull_end_force;
+    if (name == "hold_offset") actual = solution.hold_offset;
+    if (name == "pull_offset") actual = solution.pull_offset;
     const double expected = number(kValue);
     const double error = in_epsilons(actual - expected, expected);
     check.worst = std::max(check.worst, std::isnan(error) ? 1e300 : error);
@@ -62,7 +64,7 @@ TableCheck check_table(double mu_perturbation) {
 
 TEST(CapstanReference, MatchesMpmathTable) {
   const TableCheck check = check_table(0.0);
-  EXPECT_EQ(check.rows, 30);
+  EXPECT_EQ(check.rows, 40);
   EXPECT_EQ(check.failures, 0) << "worst " << check.worst << " eps";
   std::cout << "[ summary  ] max error (eps): capstan " << check.worst << "\n";
 }
@@ -104,6 +106,7 @@ TEST(CapstanReference, RefusesNonPhysicalInput) {
   EXPECT_EQ(parameter_of({0.7, 0.8, 0.3, 0.0, 2.3}), "wrap_angle");
   EXPECT_EQ(parameter_of({0.7, 0.8, 0.3, pi, 0.0}), "pull_tension");
   EXPECT_EQ(parameter_of({6.0, 0.8, 0.3, pi, 2.3}), "B");           // B / 2R^2 = 4.7 >= 2 T_pull
+  EXPECT_EQ(parameter_of({0.736, 0.34, 0.3, pi, 2.3}), "B");        // enters the contact at -0.24
   EXPECT_EQ(parameter_of({0.7, 0.8, 0.3, 0.5, 2.3}), "wrap_angle");  // the spans alone turn by 1.2
 }
 

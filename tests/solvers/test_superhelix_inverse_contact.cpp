@@ -17,6 +17,7 @@
 #include "rodvv/solvers/superhelix/kinematics.hpp"
 #include "rodvv/solvers/superhelix/loads.hpp"
 #include "rodvv/solvers/superhelix/solution.hpp"
+#include "rodvv/solvers/superhelix/solution.hpp"
 #include "rodvv/solvers/superhelix/statics.hpp"
 #include "rodvv/testing/tolerance.hpp"
 
@@ -125,7 +126,18 @@ TEST(SuperHelixInverseContact, RefusesWhatItCannotDo) {
   EXPECT_EQ(parameter_of([&] { sh::validate(forced); }), "none");
   EXPECT_EQ(parameter_of([&] { sh::step(forced, {p.q, VecX::Zero(18), 0.0}, 1e-3, sh::DynamicsPath::Recursive); }),
             "point_forces");
-  EXPECT_EQ(parameter_of([&] { sh::make_solution(forced, p.q); }), "point_forces");
+  // The solution struct carries them in n(s): each station sees the forces beyond it (half of one on it).
+  const auto with_forces = sh::make_solution(forced, p.q), without = sh::make_solution(p.model, p.q);
+  const sh::Kinematics kinematics(forced, p.q);
+  const double ell = sh::element_length(forced);
+  for (std::size_t i = 0; i < with_forces.s.size(); ++i) {
+    Vec3 beyond = Vec3::Zero();
+    for (std::size_t g = 0; g < kinematics.points().size(); ++g) {
+      const double s_g = double(kinematics.points()[g].element) * ell + kinematics.points()[g].sigma;
+      beyond += (s_g > with_forces.s[i] ? 1.0 : s_g == with_forces.s[i] ? 0.5 : 0.0) * forced.point_forces[g];
+    }
+    EXPECT_LE((with_forces.force_n[i] - without.force_n[i] - beyond).norm(), 1e-15) << "station " << i;
+  }
   forced.point_forces.resize(5);
   EXPECT_EQ(parameter_of([&] { sh::validate(forced); }), "point_forces");
 }

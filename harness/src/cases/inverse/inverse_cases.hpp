@@ -10,5 +10,6 @@ void add_round_trip(Registry& registry);           // round-trip-planar, round-t
 void add_stability_threshold(Registry& registry);  // Greenhill's heavy column, statics and dynamics
 void add_round_trip_sphere(Registry& registry);    // frictional contact: the SOCQP of the 2013 paper
 void add_curve_fit(Registry& registry);            // from a polyline to a rest shape
+void add_capstan(Registry& registry);              // forward frictional statics: the capstan with bending
 
 }  // namespace rodvv::harness::inverse_cases

@@ -18,13 +18,16 @@
 //      T_hold (cos psi_hold - mu sin psi_hold) = e^{mu phi_c} T_pull (cos psi_pull + mu sin psi_pull).
 // T_hold is its root (TOMS 748, bracketed_root.hpp; the left side grows with T_hold faster than the
 // right). Tails are taken infinitely long (the homoclinic's tails straighten exponentially, on the
-// length sqrt(B / T_i)). [DERIVED here; mu = 0 gives T_hold = T_pull, B = 0 Euler's capstan.]
+// length sqrt(B / T_i)); each tail's line passes at R + B / (2 R T_i) from the axis (the homoclinic
+// leaves the cylinder lambda^2 / R off its tail line, lambda^2 = B / T_i, with its normal turned by psi:
+// lambda^2 / R + R cos psi). [DERIVED here; mu = 0 gives T_hold = T_pull, B = 0 Euler's capstan.]
 // tests/data/make_capstan_table.py computes it independently (mpmath: the homoclinic in closed form,
 // the end forces as vector jumps, the contact arc's ODE by odefun).
 //
 // InputError for B, R, T_pull not finite and > 0, mu not finite and >= 0, phi not finite and > 0; for
 // beta >= 2 T_pull ("B": the pulling span cannot reach the cylinder's curvature: the rod does not
-// wrap); and for a contact arc phi_c <= 0 ("wrap_angle": the free spans alone turn by phi or more).
+// wrap), or for a tension entering the contact on the pulling side, T_pull cos psi_pull + mu P_pull, that
+// is not > 0 ("B": the pull cannot hold so stiff a rod on the cylinder); and for a contact arc phi_c <= 0 ("wrap_angle": the free spans alone turn by phi or more).
 // The root is searched above the T_hold at which the tension entering the contact on the holding side,
 // T_hold (cos psi_hold - mu sin psi_hold), vanishes: there is no sliding equilibrium below it.
 namespace rodvv::references {
@@ -44,6 +47,8 @@ struct CapstanSolution {
   double pull_turn = 0.0;       // psi_pull
   double hold_end_force = 0.0;  // P_hold = T_hold sin psi_hold: the point contact force where it leaves
   double pull_end_force = 0.0;  // P_pull
+  double hold_offset = 0.0;     // the holding tail's line passes at R + hold_offset from the axis
+  double pull_offset = 0.0;
 };
 
 CapstanSolution capstan_with_bending(const Capstan& capstan);

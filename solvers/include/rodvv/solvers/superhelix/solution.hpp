@@ -5,7 +5,9 @@
 //   u = q_Q, v = e0, m = R K (q_Q - q0_Q) (constitutive law), n from force balance n' + f = 0 with
 //   the dead loads, n(s) = F_end + rho S g (L - s), V = -rho S g . r; with self-contact, n(s) also
 //   sums the contact forces beyond s (at the Gauss points and at their feet) and V adds the contact
-//   field V_eff(s) (self_contact.hpp: contact_field);
+//   field V_eff(s) (self_contact.hpp: contact_field); the model's dead point forces at the Gauss points
+//   (contact forces of inverse and frictional statics) enter n(s) the same way (one at the station
+//   itself, with one Gauss point per element, counts half);
 //   vertices: the N + 1 element ends.
 #include <cstddef>
 #include <string>
