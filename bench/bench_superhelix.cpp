@@ -20,6 +20,10 @@
 //    one contact each, mu = 0.6) lying on a sphere along great circles, strand by strand (no
 //    strand-strand contact: each SOCQP is its own), S = 10 .. 1000 (10 000 contacts at S = 1000; the
 //    issue's target: under 5 s).
+//  - BM_FrictionalDrawOnSlope: the forward frictional statics (frictional_statics.hpp) of a heavy rod lying
+//    on a plane tilted 20 degrees, one contact per element (mu = 0.35), drawn up the slope by one increment
+//    from its frictionless rest (the rest solved outside the timed loop), N = 8 .. 256: Newton on (q, r),
+//    each iteration an O(N^3) dense LU of the tangent stiffness and the contact problem on N contacts.
 //  - BM_SelfContacts / BM_SelfContactsAllPairs: the self-contacts of a coil spring whose turns touch
 //    (20 turns, every Gauss point in contact with the next and the previous turn) by the chord sort-and-sweep broad phase and by testing every element pair,
 //    N = 64 .. 1024 (issue 12: the broad phase vs N).
@@ -36,6 +40,7 @@
 #include "rodvv/solvers/superhelix/clothoid_dynamics.hpp"
 #include "rodvv/solvers/superhelix/clothoid_statics.hpp"
 #include "rodvv/solvers/superhelix/dynamics.hpp"
+#include "rodvv/solvers/superhelix/frictional_statics.hpp"
 #include "rodvv/solvers/superhelix/inverse_contact.hpp"
 #include "rodvv/solvers/superhelix/inverse_statics.hpp"
 #include "rodvv/solvers/superhelix/kinematics.hpp"
@@ -255,6 +260,33 @@ void BM_InverseHairOnSphere(benchmark::State& bench) {
   bench.counters["mean_sweeps"] = static_cast<double>(sweeps) / static_cast<double>(strands);
 }
 
+void BM_FrictionalDrawOnSlope(benchmark::State& bench) {
+  const double alpha = 20.0 * 3.141592653589793 / 180.0;
+  const rodvv::Vec3 normal(std::sin(alpha), 0.0, std::cos(alpha)), down(std::cos(alpha), 0.0, -std::sin(alpha));
+  sh::RodModel model;
+  model.length = 1.3;
+  model.elements = static_cast<std::size_t>(bench.range(0));
+  model.gauss_points = 1;
+  model.stiffness = rodvv::Vec3(0.9, 2.1, 1.4);
+  model.line_density = 0.7;
+  model.gravity = rodvv::Vec3(0.0, 0.0, -7.3);
+  model.root_frame << down, normal.cross(down), normal;
+  const sh::RigidObstacle slope{sh::RigidObstacle::Shape::Plane, rodvv::Vec3::Zero(), normal, 0.0, 0.0};
+  const rodvv::VecX straight = rodvv::VecX::Zero(3 * static_cast<Eigen::Index>(model.elements));
+  const auto rest = sh::solve_frictional_increment(model, {slope}, sh::frictional_start(model, straight));
+  sh::RigidObstacle rough = slope;
+  rough.mu = 0.35;
+  model.root_position -= 0.01 * down;
+  std::size_t iterations = 0;
+  for (auto _ : bench) {
+    const auto drawn = sh::solve_frictional_increment(model, {rough}, rest);
+    benchmark::DoNotOptimize(drawn.q.data());
+    iterations = drawn.iterations;
+  }
+  bench.SetComplexityN(bench.range(0));
+  bench.counters["iterations"] = static_cast<double>(iterations);
+}
+
 BENCHMARK(BM_StepRecursive)->RangeMultiplier(2)->Range(16, 1024)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
 BENCHMARK(BM_StepDense)->RangeMultiplier(2)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
 BENCHMARK(BM_StepRecursiveTranslationalOnly)->RangeMultiplier(4)->Range(16, 1024)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity(benchmark::oN);
@@ -268,6 +300,7 @@ BENCHMARK(BM_JacobianCentralDifference)->RangeMultiplier(4)->Range(16, 256)->Arg
 BENCHMARK(BM_SelfContacts)->RangeMultiplier(2)->Range(64, 1024)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_SelfContactsAllPairs)->RangeMultiplier(2)->Range(64, 1024)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_InverseStatics)->RangeMultiplier(4)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
+BENCHMARK(BM_FrictionalDrawOnSlope)->RangeMultiplier(2)->Range(8, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_InverseHairOnSphere)->RangeMultiplier(10)->Range(10, 1000)->ArgName("strands")->Unit(benchmark::kMillisecond)->Complexity(benchmark::oN);
 
 }  // namespace

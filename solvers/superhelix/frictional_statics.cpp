@@ -57,8 +57,9 @@ struct Candidate {
 // s turned to the new slip, until nothing changes: all violated statuses at once for 30 rounds, then one at
 // a time, the least index first (Murty's rule, finite for the frictionless LCP, W positive definite), up to
 // 8 m more rounds. Newton's iterations converge together with the slip directions. It returns nothing
-// when the statuses have not settled: the block Gauss-Seidel takes over. The block Gauss-Seidel alone slows down as contacts along one inextensible
-// strand multiply (W couples them all: 10^5 sweeps do not reach 1e-12 at 40 contacts of the capstan).
+// when the statuses have not settled: the block Gauss-Seidel takes over. The Gauss-Seidel alone slows down
+// as contacts along one inextensible strand multiply (W couples them all: 10^5 sweeps do not reach 1e-12 at
+// 40 contacts of the capstan).
 std::optional<VecX> active_set_contact_solve(const MatX& W, const VecX& b, const VecX& mu, const VecX& guess) {
   enum class Status { Open, Stick, Slide };
   const Eigen::Index m = mu.size();

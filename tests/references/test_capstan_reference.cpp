@@ -16,6 +16,7 @@
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/references/capstan.hpp"
+#include "rodvv/testing/input_error.hpp"
 #include "rodvv/testing/reference_table.hpp"
 #include "rodvv/testing/tolerance.hpp"
 
@@ -90,15 +91,10 @@ TEST(CapstanReference, FlexibleAndFrictionlessLimits) {
 
 TEST(CapstanReference, RefusesNonPhysicalInput) {
   const auto parameter_of = [](const ref::Capstan& capstan) {
-    try {
-      ref::capstan_with_bending(capstan);
-    } catch (const rodvv::InputError& e) {
-      return e.parameter();
-    }
-    return std::string("none");
+    return rodvv::testing::input_error_parameter_of([&] { ref::capstan_with_bending(capstan); });
   };
   const double pi = std::numbers::pi;
-  EXPECT_EQ(parameter_of({0.7, 0.8, 0.3, pi, 2.3}), "none");
+  EXPECT_EQ(parameter_of({0.7, 0.8, 0.3, pi, 2.3}), "<no InputError>");
   EXPECT_EQ(parameter_of({0.0, 0.8, 0.3, pi, 2.3}), "B");
   EXPECT_EQ(parameter_of({0.7, -1.0, 0.3, pi, 2.3}), "R");
   EXPECT_EQ(parameter_of({0.7, 0.8, -0.1, pi, 2.3}), "mu");

@@ -19,7 +19,7 @@
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/solvers/superhelix/frictional_statics.hpp"
-#include "rodvv/solvers/superhelix/kinematics.hpp"
+#include "rodvv/testing/input_error.hpp"
 
 namespace {
 
@@ -129,20 +129,13 @@ TEST(SuperHelixFrictionalStatics, RefusesBadInputByName) {
   const Slope s = slope();
   const VecX straight = VecX::Zero(24);
   const auto start = sh::frictional_start(s.model, straight);
-  const auto parameter_of = [&](auto&& call) {
-    try {
-      call();
-    } catch (const rodvv::InputError& e) {
-      return e.parameter();
-    }
-    return std::string("none");
-  };
+  const auto parameter_of = [](auto&& call) { return rodvv::testing::input_error_parameter_of(call); };
   const auto with_obstacle = [&](auto change) {
     sh::RigidObstacle o = s.plane;
     change(o);
     return parameter_of([&] { sh::solve_frictional_increment(s.model, {o}, start); });
   };
-  EXPECT_EQ(with_obstacle([](sh::RigidObstacle&) {}), "none");
+  EXPECT_EQ(with_obstacle([](sh::RigidObstacle&) {}), "<no InputError>");
   EXPECT_EQ(with_obstacle([](sh::RigidObstacle& o) { o.mu = -0.1; }), "obstacles");
   EXPECT_EQ(with_obstacle([](sh::RigidObstacle& o) { o.direction *= 1.01; }), "obstacles");
   EXPECT_EQ(with_obstacle([](sh::RigidObstacle& o) {
