@@ -13,17 +13,18 @@
 //
 // Checks:
 //  - hold_tension: T_hold = n(0) . t(0), the root's reaction (the tip force plus every contact force), against
-//    capstan_with_bending; observed order and magnitude;
+//    capstan_with_bending, under twice its first-order envelope (below: why no order is fitted);
 //  - H_balance: the Noether quantity is no longer constant (friction acts along the rod), but its change is
 //    predicted, H(s+) - H(s-) = -f . t at each contact force f: max_s |H(s) + sum_{s_g < s} f_g . t_g - H(0)| / T_pull
-//    (PHYSICS.md §1.3: H' = -f.t); the solution struct's n(s), m(s) against the forces the solver found;
+//    (seed slides 002: with friction H' = -f.t, f the tangential contact force per length); the solution
+//    struct's n(s), m(s) against the forces the solver found;
 //  - root_shear: the root is clamped on the holding tail's line (the homoclinic's offset, references/capstan.hpp),
 //    so that its tail carries the tension alone: |n(0) - T_hold t(0)| / T_hold -> 0 checks the offset, the turn
 //    psi_hold and the tension together (clamped on the cylinder's tangent line instead, the tail bends by
 //    0.06 rad and T_hold is 2e-3 low at every N);
 //  - the friction law at the contacts: every loaded contact slides, |r_T| = mu r_N (stick_fraction = 0), its
 //    force against its slip (slip_alignment: max over contacts of 1 + r_T . u_T / (|r_T| |u_T|), 0 when opposed),
-//    no force outside its cone (cone_violation), no penetration beyond the Gauss-Seidel's tolerance.
+//    no force outside its cone (cone_violation), no penetration beyond the Newton's tolerance.
 // Scales: the cylinder's axis along z through (0.3, -0.2, 0.1) R; tails 8 sqrt(B / T_pull) long (the
 // homoclinics straighten as e^{-s / sqrt(B/T)}: their clamp and free end move T_hold by ~e^{-16});
 // one Gauss point per element (the contact at the element's midpoint).
@@ -235,7 +236,7 @@ void add_capstan(Registry& registry) {
        "increments of 0.05 R.",
        "T_hold from the capstan with bending (Euler's T_pull e^{mu phi} corrected by the free spans' homoclinics and "
        "the contact ends' point forces); H' = -f.t; every loaded contact sliding against its slip",
-       "Euler 1762 (capstan); ALGORITHMS.md §4; PHYSICS.md §1.3",
+       "Euler 1762 (capstan); ALGORITHMS.md §4; seed slides 002 (H' = -f.t)",
        "Super-Helix quasi-static frictional contact: Newton on (q, r) with the Delassus W = H A^-1 H^T and block "
        "Gauss-Seidel with the exact local Coulomb solver (De Saxce)"},
       {make_parameter("B", 0.736, 0.0, 1e12, true, false, "force length^2", "bending stiffness in the wrap's plane"),
