@@ -252,12 +252,8 @@ FrictionalStaticResult solve_frictional_increment(const RodModel& model, const s
         candidates.push_back(std::move(c));
       }
     const VecX residual = static_residual(loaded, result.q);
-    VecX contact_load = VecX::Zero(result.q.size());
-    for (std::size_t g = 0; g < points; ++g)
-      if (!loaded.point_forces[g].isZero(0.0)) {
-        const auto& point = kinematics.points()[g];
-        contact_load += kinematics.position_jacobian(point.element, point.sigma).transpose() * loaded.point_forces[g];
-      }
+    // J^T f of the contact forces alone, by the tip-to-root wrench pass (loads.hpp, O(N)).
+    const VecX contact_load = generalised_force(kinematics, loaded.point_forces, Vec3::Zero(), Vec3::Zero());
     const double scale = std::max({k_max * result.q.lpNorm<Eigen::Infinity>(), k_max / model.length, load_scale,
                                    contact_load.lpNorm<Eigen::Infinity>()});
     result.residual = residual.lpNorm<Eigen::Infinity>() / scale;

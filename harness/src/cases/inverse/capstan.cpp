@@ -137,15 +137,20 @@ LevelOutput run(const Parameters& p, double level) {
   // H with its predicted jumps -f.t at the contact forces (a force at a station counts half there).
   const auto H = invariants::noether3d_flattened(solution);
   const double ell = sh::element_length(model);
+  struct Jump {
+    double s, tangential;  // where, and f.t there
+  };
+  std::vector<Jump> jumps;
+  for (const auto& c : state.contacts) {
+    const auto& point = kinematics.points()[c.point];
+    jumps.push_back({double(point.element) * ell + point.sigma,
+                     c.force.dot(kinematics.frame(point.element, point.sigma).col(0))});
+  }
   double H_balance = 0.0, reference_H = 0.0;
   for (std::size_t i = 0; i < solution.s.size(); ++i) {
     double passed = 0.0;
-    for (const auto& c : state.contacts) {
-      const auto& point = kinematics.points()[c.point];
-      const double s_g = double(point.element) * ell + point.sigma;
-      const double weight = s_g < solution.s[i] ? 1.0 : s_g == solution.s[i] ? 0.5 : 0.0;
-      passed += weight * c.force.dot(kinematics.frame(point.element, point.sigma).col(0));
-    }
+    for (const auto& jump : jumps)
+      passed += (jump.s < solution.s[i] ? 1.0 : jump.s == solution.s[i] ? 0.5 : 0.0) * jump.tangential;
     const double balanced = H[i] + passed;
     if (i == 0) reference_H = balanced;
     H_balance = std::max(H_balance, std::abs(balanced - reference_H) / k.T);
@@ -230,15 +235,16 @@ void add_capstan(Registry& registry) {
   Case c = make_case(
       "inverse",
       {"inverse/capstan", "Forward frictional statics: a Super-Helix sliding round a cylinder (capstan with bending)",
-       "Belt-like rod (B in the wrap's plane, GJ = 3 B, out of plane 8 B) wrapped by phi round a rigid cylinder of radius R (to the centreline), "
-       "tip pulled by a dead T_pull along its tail, root clamped and drawn back along the other tail so that the rod "
+       "Belt-like rod (B in the wrap's plane, GJ = 3 B, out of plane 8 B) wrapped by phi round a rigid cylinder "
+       "of radius R (to the centreline), tip pulled by a dead T_pull along its tail, root clamped and drawn back along the other tail so that the rod "
        "slides; Coulomb friction mu at one Gauss point per element; frictionless equilibrium first, then two "
        "increments of 0.05 R.",
        "T_hold from the capstan with bending (Euler's T_pull e^{mu phi} corrected by the free spans' homoclinics and "
        "the contact ends' point forces); H' = -f.t; every loaded contact sliding against its slip",
        "Euler 1762 (capstan); ALGORITHMS.md §4; seed slides 002 (H' = -f.t)",
-       "Super-Helix quasi-static frictional contact: Newton on (q, r) with the Delassus W = H A^-1 H^T and block "
-       "Gauss-Seidel with the exact local Coulomb solver (De Saxce)"},
+       "Super-Helix quasi-static frictional contact: Newton on (q, r) with the Delassus W = H A^-1 H^T, the contact "
+       "problem by a primal-dual active set, block Gauss-Seidel with the exact local Coulomb solver (De Saxce) as "
+       "its fallback"},
       {make_parameter("B", 0.736, 0.0, 1e12, true, false, "force length^2", "bending stiffness in the wrap's plane"),
        make_parameter("R", 0.8, 0.0, 1e6, true, false, "length", "cylinder radius to the rod's centreline"),
        make_parameter("T_pull", 2.3, 0.0, 1e12, true, false, "force", "dead tension at the tip"),

@@ -20,8 +20,10 @@
 // arms, plus the turning of the normal force with the point on a curved obstacle, -J_g^T r_N dn/dx J_g);
 // u linearised, u = H dq + w with H the rows (n, t1, t2)^T J_g and w the gaps and slips at q_k;
 // eliminating dq = A^-1 (H^T (r - r_k) - R_k) leaves the contact problem u = W r + b with the Delassus
-// operator W = H A^-1 H^T (symmetrised) and b = w - H A^-1 (R_k + H^T r_k), solved by the block
-// Gauss-Seidel with the exact local Coulomb solver. At a fixed point dq = 0, so the law holds with the
+// operator W = H A^-1 H^T (symmetrised) and b = w - H A^-1 (R_k + H^T r_k), solved by a primal-dual
+// active set (statuses open / stick / slide, the slip direction frozen and updated; Murty's least-index
+// rule when it cycles), the block Gauss-Seidel with the exact local Coulomb solver as its fallback (alone it
+// stalls on many contacts along one inextensible strand). At a fixed point dq = 0, so the law holds with the
 // true gaps and slips whatever W's approximations. A rod held by its contacts (a rope round a drum) is
 // unstable without them: where the forces r_k do not yet carry the load A is indefinite, and the step
 // then solves the augmented equilibrium (an augmented Lagrangian on the contacts active at r_k: G their
