@@ -109,6 +109,30 @@ TEST(ContactGatesHaveTeeth, AMicronWallShiftFailsTheLcpAgreementGate) {
   EXPECT_FALSE(result.passed());
 }
 
+// The line contact's flat, read as a vertex's offset from its neighbours' chord: a polygon whose flat has one
+// vertex 1e-12 off (five times the round-off bound, a thousand times the largest measured) fails it; an H
+// drift that shrinks like h instead of h^2 (the spread times N / 32, equal at the coarsest level) fails the
+// order band measured over the window.
+TEST(ContactGatesHaveTeeth, AFlatOffItsWallAndAFirstOrderHDriftFailTheLineGates) {
+  for (const std::string metric : {"flat_offset", "H_spread"}) {
+    Case wrong = named_case("elastica-contact/cavity-line/polygon");
+    const auto right = wrong.run_level;
+    wrong.run_level = [right, metric](const Parameters& p, double level) {
+      LevelOutput out = right(p, level);
+      MetricSample& sample = out.metrics.at(metric);
+      sample.computed = metric == "flat_offset" ? sample.computed + 1e-12 : sample.computed * level / 32.0;
+      sample.error = sample.computed;
+      return out;
+    };
+    const auto result = run_sweep(wrong, wrong.info.parameters, wrong.info.resolution.default_levels);
+    EXPECT_FALSE(result.passed()) << metric;
+    bool gate_of_metric_failed = false;
+    for (const auto& gate : result.gates)
+      if (!gate.passed && gate.metric == metric) gate_of_metric_failed = true;
+    EXPECT_TRUE(gate_of_metric_failed) << metric << failing_gates(result);
+  }
+}
+
 TEST(ContactCases, ShorteningBeyondTheTabulatedBranchIsRejected) {
   const Case& c = named_case("elastica-contact/cavity-line/polygon");
   Parameters p = c.info.parameters;

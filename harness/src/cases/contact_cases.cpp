@@ -295,15 +295,29 @@ LevelOutput run_cavity_level(e2d::Scheme scheme, Regime regime, const Parameters
   if (regime == Regime::Line && !c.contacts.empty()) {
     // Flat length: the contact-force centroids of the two halves (the concentrated edge reactions
     // spread over a few nodes).
-    double sl = 0, fl = 0, sr = 0, fr = 0, flat_kappa = 0.0;
+    double sl = 0, fl = 0, sr = 0, fr = 0;
     for (const auto& k : c.contacts) {
       (rod.s[k.node] < 0.5 ? sl : sr) += k.force * rod.s[k.node];
       (rod.s[k.node] < 0.5 ? fl : fr) += k.force;
     }
     out.metrics["flat_length"] = error_sample(sr / fr - sl / fl, r.flat_length);
-    const std::size_t first = c.contacts.front().node, last = c.contacts.back().node;
-    for (std::size_t i = first + 1; i < last; ++i) flat_kappa = std::max(flat_kappa, std::abs(rod.kappa[i]));
-    out.metrics["flat_kappa"] = {flat_kappa, 0.0, flat_kappa};
+    // The flat: the nodes from the first to the last contact with the wall the middle of the run holds. In
+    // the continuum it carries no distributed force (kappa = 0 there, so m' = 0 and the shear vanishes),
+    // and its inner nodes may be inactive (lambda = 0), at any g >= -64 eps (1 + max|r|) ~ 3e-14 (an
+    // inactive node of a polygon's flat is in equilibrium with straight edges: on the wall to round-off).
+    // Measured as each vertex's offset from the chord of its neighbours, |kappa_i| h^2 / 2 (kappa_i the
+    // turning angle / h), a length like the gaps: a bound on kappa alone would grow as 1 / h^2 (a sag of
+    // 1.6e-14 over eleven inactive nodes is kappa = 1.6e-10 at N = 256, wall_gap 0.2).
+    const std::size_t middle = c.contacts[c.contacts.size() / 2].obstacle;
+    std::size_t first = rod.nodes(), last = 0;
+    for (const auto& k : c.contacts)
+      if (k.obstacle == middle) first = std::min(first, k.node), last = std::max(last, k.node);
+    double flat_offset = 0.0;
+    for (std::size_t i = first + 1; i < last; ++i) {
+      const double h = 0.5 * (rod.s[i + 1] - rod.s[i - 1]);
+      flat_offset = std::max(flat_offset, 0.5 * std::abs(rod.kappa[i]) * h * h);
+    }
+    out.metrics["flat_offset"] = {flat_offset, 0.0, flat_offset};
   }
   add_plots(out, rod, force, a);
   if (ceiling != Ceiling::Wall) {  // draw the disk's arc over the chord instead of the wall y = a
@@ -373,10 +387,19 @@ void add_cavity_gates(Case& c, e2d::Scheme scheme, Regime regime) {
                                           "envelope C h, C = 2 x the largest err N measured (contact-force centroids)");
   flat.measured = true;
   c.gates.push_back(flat);
-  order_and_bound(c, "H_spread", 2.0, arcs ? 6.0224e-6 : 4.9524e-6, "H drift O(h^2), also across the flat segment");
+  // H_spread is O(h^2), but its constant moves with the lift-off points' places between nodes as the other
+  // metrics' do: over the honoured window (wall_gap 0.04 .. 0.3, twelve shortenings across the regime, both
+  // schemes; 2026-11-28) the fitted order on N = 32 .. 256 lies in 1.77 .. 2.0 (pairwise 1.61 .. 2.14), and
+  // doubling the levels does not settle it (1.86 .. 2.0 on 64 .. 512). The order's band is that measured one
+  // (the window [1.6, 2.5] still refuses an O(h) drift); its magnitude is bounded at the defaults.
+  c.gates.push_back(order_range_gate("H_spread", 1.7, 2.0,
+                                     "H drift O(h^2), also across the flat segment; the fitted order moves in 1.77 .. "
+                                     "2.0 with the lift-off points' places between nodes (measured over the window)"));
+  c.gates.push_back(measured_bound("H_spread", arcs ? 6.0224e-6 : 4.9524e-6, 1.0 / 256, 2.0));
   if (!arcs)  // polygon: the nodes of the run are on the wall, edges flat: kappa = 0 to round-off
-    c.gates.push_back(upper_bound_gate("flat_kappa", 1e-12, GateScope::AllLevels,
-                                       "kappa = 0 on the flat contact: round-off (measured <= 5e-15)"));
+    c.gates.push_back(upper_bound_gate("flat_offset", 2e-13, GateScope::AllLevels,
+                                       "the flat on the wall to round-off: a vertex off its neighbours' chord by at "
+                                       "most twice the gaps' 1e-13 (measured <= 1.2e-15 over the regimes)"));
 }
 
 Case cavity_case(e2d::Scheme scheme, Regime regime, CondensedLcp lcp = std::nullopt, Ceiling ceiling = Ceiling::Wall) {
@@ -424,7 +447,8 @@ Case cavity_case(e2d::Scheme scheme, Regime regime, CondensedLcp lcp = std::null
     c.info.metrics.push_back(error_metric("flat_length", "length",
                                           "distance of the contact-force centroids of the two halves vs l",
                                           std::nullopt));
-    c.info.metrics.push_back(invariant_metric("flat_kappa", "max |kappa| strictly inside the contact run", std::nullopt));
+    c.info.metrics.push_back(invariant_metric(
+        "flat_offset", "max |kappa| h^2 / 2 (a vertex's offset from its neighbours' chord) inside the flat", std::nullopt));
   }
   add_cavity_gates(c, scheme, regime);
   if (lcp) {
