@@ -396,19 +396,13 @@ void add_self_contact(const Context& c, VecX& r, Triplets* jac) {
   for (const auto& entry : hessian) jac->emplace_back(dof(entry.row()), dof(entry.col()), entry.value());
 }
 
-// Generalised loads times the load factor: residual -= Q, Jacobian -= dQ/dz.
-void add_loads(const Context& c, double load_factor, VecX& r, Triplets* jac) {
-  const auto& m = c.model;
-  for (std::size_t i = 0; i <= m.elements; ++i) r.segment<3>(c.layout.vertex(i)) -= load_factor * c.vertex_mass(i) * m.gravity;
-  r.segment<3>(c.layout.vertex(m.elements)) -= load_factor * m.end_force;
-  if (m.end_moment.isZero(0.0)) return;
-  // Dead moment M on the tip edge e: couple (M x e)/|e|^2 on (x_N, -x_{N-1}), M.t on theta^{N-1}.
-  const std::size_t last = m.elements - 1;
-  const Vec3 e = c.state.position[m.elements] - c.state.position[last];
+// A dead moment M on edge j (e = x_{j+1} - x_j): the couple (M x e)/|e|^2 on (x_{j+1}, -x_j) and M.t on
+// theta^j, the generalised force of its virtual work; residual -= Q, Jacobian -= dQ/dz.
+void add_edge_moment(const Context& c, std::size_t j, const Vec3& M, VecX& r, Triplets* jac) {
+  const Vec3 e = c.state.position[j + 1] - c.state.position[j];
   const double len2 = e.squaredNorm(), len = std::sqrt(len2);
-  const Vec3 M = load_factor * m.end_moment;
   const Vec3 couple = M.cross(e) / len2;
-  const std::size_t a = c.layout.vertex(last), b = c.layout.vertex(m.elements), th = c.layout.angle(last);
+  const std::size_t a = c.layout.vertex(j), b = c.layout.vertex(j + 1), th = c.layout.angle(j);
   r.segment<3>(b) -= couple;
   r.segment<3>(a) += couple;
   r[th] -= M.dot(e) / len;
@@ -426,6 +420,18 @@ void add_loads(const Context& c, double load_factor, VecX& r, Triplets* jac) {
     jac->emplace_back(int(th), int(b + q), -dtwist[q]);
     jac->emplace_back(int(th), int(a + q), dtwist[q]);
   }
+}
+
+// Generalised loads times the load factor: residual -= Q, Jacobian -= dQ/dz.
+void add_loads(const Context& c, double load_factor, VecX& r, Triplets* jac) {
+  const auto& m = c.model;
+  for (std::size_t i = 0; i <= m.elements; ++i) r.segment<3>(c.layout.vertex(i)) -= load_factor * c.vertex_mass(i) * m.gravity;
+  r.segment<3>(c.layout.vertex(m.elements)) -= load_factor * m.end_force;
+  for (std::size_t i = 0; i < m.vertex_forces.size(); ++i)
+    r.segment<3>(c.layout.vertex(i)) -= load_factor * m.vertex_forces[i];
+  for (std::size_t j = 0; j < m.edge_moments.size(); ++j)
+    if (!m.edge_moments[j].isZero(0.0)) add_edge_moment(c, j, load_factor * m.edge_moments[j], r, jac);
+  if (!m.end_moment.isZero(0.0)) add_edge_moment(c, m.elements - 1, load_factor * m.end_moment, r, jac);
 }
 
 void assemble(const Context& c, double load_factor, VecX& r, Triplets* jac) {
@@ -474,6 +480,8 @@ EnergyParts energy(const RodModel& model, const RodState& state) {
     }
   for (std::size_t i = 0; i <= model.elements; ++i) parts.gravity -= c.vertex_mass(i) * model.gravity.dot(state.position[i]);
   parts.tip_force = -model.end_force.dot(state.position[model.elements]);
+  for (std::size_t i = 0; i < model.vertex_forces.size(); ++i)
+    parts.vertex_forces -= model.vertex_forces[i].dot(state.position[i]);
   if (has_self_contact(model)) parts.contact = self_contact_energy(model.self_contact, state.position, c.ell);
   return parts;
 }

@@ -127,9 +127,7 @@ Scales residual_scales(const StepContext& c, const VecX& y) {
   const RodModel& m = c.model;
   const double L = m.length;
   double force = m.stiffness.maxCoeff() / (L * L);
-  force = std::max(force, m.end_force.norm());
-  force = std::max(force, m.end_moment.norm() / L);
-  force = std::max(force, m.line_density * m.gravity.norm() * L);
+  force = std::max(force, dead_load_scale(m, 1.0));
   double speed = 0.0, spin = 0.0;
   for (std::size_t k = 0; k < c.layout.size(); ++k) {
     const double v = std::abs(c.state.velocity[Eigen::Index(k)]);

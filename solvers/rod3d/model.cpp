@@ -1,5 +1,6 @@
 #include "rodvv/solvers/rod3d/model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -49,6 +50,16 @@ int sliding_axis(const EndCondition& end) {
   return -1;
 }
 
+double dead_load_scale(const RodModel& model, double load_factor) {
+  const double L = model.length;
+  double total_force = 0.0, total_moment = 0.0;  // a distributed load counts by its resultant's size
+  for (const Vec3& f : model.vertex_forces) total_force += f.norm();
+  for (const Vec3& m : model.edge_moments) total_moment += m.norm();
+  double force = std::max({model.end_force.norm(), model.end_moment.norm() / L,
+                           model.line_density * model.gravity.norm() * L, total_force, total_moment / L});
+  return load_factor * force;
+}
+
 void validate(const RodModel& model) {
   require_at_least("elements", model.elements, 2);
   require_positive("length", model.length);
@@ -62,6 +73,14 @@ void validate(const RodModel& model) {
   require_finite_vector("gravity", model.gravity);
   require_finite_vector("end_force", model.end_force);
   require_finite_vector("end_moment", model.end_moment);
+  const auto require_per = [](const char* name, const std::vector<Vec3>& values, std::size_t count, const char* of) {
+    if (!values.empty() && values.size() != count)
+      throw InputError(name, std::string("invalid parameter '") + name + "': " + std::to_string(values.size()) +
+                                 " values, must be empty or one per " + of + " (" + std::to_string(count) + ")");
+    for (const Vec3& value : values) require_finite_vector(name, value);
+  };
+  require_per("vertex_forces", model.vertex_forces, model.elements + 1, "vertex");
+  require_per("edge_moments", model.edge_moments, model.elements, "edge");
   validate_end("root", model.root);
   validate_end("tip", model.tip);
   if (has_self_contact(model)) {

@@ -32,9 +32,14 @@ SpatialRodSolution make_solution(const RodModel& model, const RodState& state) {
     beyond += vertex_forces[j + 1];
     edge_force[j] = beyond;
   }
-  if (!model.end_moment.isZero(0.0)) {
-    const Vec3 e = state.position[n] - state.position[n - 1];
-    edge_force[n - 1] -= model.end_moment.cross(e) / e.squaredNorm();
+  // A dead moment on edge j puts its couple on x_{j+1} and minus it on x_j (discrete_energy.cpp): only the
+  // first is beyond edge j, and it is a load, not an elastic force.
+  for (std::size_t j = 0; j < n; ++j) {
+    Vec3 moment = j < model.edge_moments.size() ? model.edge_moments[j] : Vec3::Zero();
+    if (j == n - 1) moment += model.end_moment;
+    if (moment.isZero(0.0)) continue;
+    const Vec3 e = state.position[j + 1] - state.position[j];
+    edge_force[j] -= moment.cross(e) / e.squaredNorm();
   }
   std::vector<Mat3> frames(n);
   std::vector<double> stretch(n);

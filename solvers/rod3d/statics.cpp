@@ -117,9 +117,7 @@ Scales residual_scales(const RodModel& model, const RodState& state, double load
   Scales s;
   const double L = model.length;
   double force = model.stiffness.maxCoeff() / (L * L);
-  force = std::max(force, load_factor * model.end_force.norm());
-  force = std::max(force, load_factor * model.end_moment.norm() / L);
-  force = std::max(force, load_factor * model.line_density * model.gravity.norm() * L);
+  force = std::max(force, dead_load_scale(model, load_factor));
   for (double tension : state.multiplier) force = std::max(force, std::abs(tension));
   s.force = force;
   s.moment = force * L;

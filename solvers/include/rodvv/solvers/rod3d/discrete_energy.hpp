@@ -35,9 +35,10 @@ struct EnergyParts {
   double stretching = 0.0; // 0 for an inextensible rod
   double gravity = 0.0;    // - sum m_i g.x_i
   double tip_force = 0.0;  // - F.x_N
+  double vertex_forces = 0.0;  // - sum f_i.x_i (the model's vertex_forces; edge moments have no potential)
   double contact = 0.0;    // the self-contact barrier (self_contact.hpp), 0 without self-contact
   double elastic() const noexcept { return bending + twisting + stretching; }
-  double potential() const noexcept { return elastic() + contact + gravity + tip_force; }
+  double potential() const noexcept { return elastic() + contact + gravity + tip_force + vertex_forces; }
 };
 
 // The integrated strains (twist angle, kb.m1avg, kb.m2avg) at interior vertices 1 .. N-1 (entries 0
@@ -46,7 +47,8 @@ std::vector<Vec3> integrated_strains(const RodModel& model, const RodState& stat
 
 EnergyParts energy(const RodModel& model, const RodState& state);
 
-// Static residual (see above); load_factor scales gravity, the tip force and the tip moment.
+// Static residual (see above); load_factor scales every dead load (gravity, the tip force and moment,
+// the vertex forces and edge moments).
 VecX static_residual(const RodModel& model, const RodState& state, double load_factor);
 
 // The residual at base + dz in the chart of `base` (its reference frames transported from its

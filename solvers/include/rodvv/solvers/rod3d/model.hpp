@@ -17,9 +17,11 @@
 //     constraint |e^j| = ebar with a Lagrange multiplier (= the axial force n.t of the edge): the
 //     inextensible Kirchhoff rod, so that its closed forms apply without a stretching floor.
 // Loads (dead): gravity g on the lumped vertex masses rho S lbar (half at the ends), a force and a
-// moment at the tip (s = L). A moment on an edge enters as the generalised force of its virtual
-// work: the couple (M x t)/|e| on the edge's end vertices and M.t on its material angle; it is not
-// conservative for general 3-D rotations (Ziegler), so the static Jacobian is not symmetric then.
+// moment at the tip (s = L), and any force on each vertex and moment on each edge (a distributed load
+// f(s), c(s) lumped by the caller, e.g. f(s_i) lbar_i and c(s_j) ebar: a manufactured solution's loads).
+// A moment on an edge enters as the generalised force of its virtual work: the couple (M x t)/|e| on
+// the edge's end vertices and M.t on its material angle; it is not conservative for general 3-D
+// rotations (Ziegler), so the static Jacobian is not symmetric then.
 //
 // Supports at each end: free; pinned (the end vertex held; the end edge's material angle held or
 // not); clamped (the end edge held, with its material frame). A clamped end edge is centred on the
@@ -83,6 +85,8 @@ struct RodModel {
   EndCondition tip;              // s = L
   Vec3 end_force = Vec3::Zero();   // dead force at the tip vertex
   Vec3 end_moment = Vec3::Zero();  // dead moment on the tip edge
+  std::vector<Vec3> vertex_forces;  // dead force on each vertex x_0 .. x_N: empty (none) or N + 1 values
+  std::vector<Vec3> edge_moments;   // dead moment on each edge 0 .. N-1: empty (none) or N values
   SelfContact self_contact;        // radius 0: none; else the barrier of self_contact.hpp (in the energy)
 };
 
@@ -103,6 +107,9 @@ inline double rest_edge_length(const RodModel& model) {
 inline double vertex_arclength(const RodModel& model, std::size_t i) {
   return (static_cast<double>(i) - (model.root.support == EndSupport::Clamped ? 0.5 : 0.0)) * rest_edge_length(model);
 }
+// The largest dead load as a force (moments over L): the scale of a residual in force units.
+double dead_load_scale(const RodModel& model, double load_factor);
+
 inline bool is_inextensible(const RodModel& model) {
   return model.extensional_stiffness == std::numeric_limits<double>::infinity();
 }
