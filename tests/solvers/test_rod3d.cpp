@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/testing/input_error.hpp"
 #include "rodvv/references/elastica.hpp"
 #include "rodvv/solvers/rod3d/discrete_energy.hpp"
 #include "rodvv/solvers/rod3d/model.hpp"
@@ -114,6 +115,63 @@ TEST(Rod3dEnergy, JacobianIsTheDerivativeOfTheResidualInextensibleWithTipMoment)
   auto model = general_model(6, true);
   model.end_moment = Vec3(0.3, -0.8, 0.45);
   expect_jacobian_matches(model);
+}
+
+// Distributed dead loads (a manufactured solution's): a force on every vertex and a moment on every edge, the
+// moments' virtual-work couples depending on the edges (unsymmetric, like the tip moment's).
+rod::RodModel model_with_distributed_loads(std::size_t n, bool inextensible) {
+  auto model = general_model(n, inextensible);
+  for (std::size_t i = 0; i <= n; ++i)
+    model.vertex_forces.push_back(Vec3(0.3 * std::sin(double(i)), -0.2 + 0.05 * double(i), 0.4 * std::cos(double(i))));
+  for (std::size_t j = 0; j < n; ++j)
+    model.edge_moments.push_back(Vec3(0.25 * std::cos(1.3 * double(j)), 0.5 - 0.1 * double(j), -0.35 * std::sin(double(j) + 0.2)));
+  return model;
+}
+
+TEST(Rod3dEnergy, JacobianIsTheDerivativeOfTheResidualWithDistributedLoads) {
+  expect_jacobian_matches(model_with_distributed_loads(6, true));
+  expect_jacobian_matches(model_with_distributed_loads(5, false));
+}
+
+// The same loads through the two interfaces give the same residual: the tip edge's moment as end_moment or
+// as the last edge moment, the tip force as end_force or as the last vertex force; and the vertex forces'
+// potential is in the energy (the residual of an extensible rod with them alone is its gradient).
+TEST(Rod3dLoads, EdgeMomentsAndVertexForcesAreTheEndLoadsOnEveryEdge) {
+  auto ends = general_model(6, true);
+  ends.end_moment = Vec3(0.3, -0.8, 0.45);
+  auto distributed = ends;
+  distributed.end_moment = Vec3::Zero();
+  distributed.edge_moments.assign(6, Vec3::Zero());
+  distributed.edge_moments.back() = ends.end_moment;
+  distributed.end_force = Vec3::Zero();
+  distributed.vertex_forces.assign(7, Vec3::Zero());
+  distributed.vertex_forces.back() = ends.end_force;
+  const auto state = general_state(ends);
+  EXPECT_EQ((rod::static_residual(ends, state, 0.7) - rod::static_residual(distributed, state, 0.7)).cwiseAbs().maxCoeff(), 0.0);
+  auto forces_only = general_model(7, false);
+  for (std::size_t i = 0; i <= 7; ++i) forces_only.vertex_forces.push_back(Vec3(0.2 * double(i), -0.3, 0.1 * std::sin(double(i))));
+  const auto state7 = general_state(forces_only);
+  const rod::DofLayout layout(forces_only);
+  const VecX r = rod::static_residual(forces_only, state7, 1.0);
+  const double h = 1e-5 * forces_only.length;
+  double worst = 0.0;
+  for (std::size_t k = 0; k < layout.size(); ++k) {
+    const double plus = rod::energy(forces_only, rod::displaced(forces_only, state7, unit(layout.size(), k, h))).potential();
+    const double minus = rod::energy(forces_only, rod::displaced(forces_only, state7, unit(layout.size(), k, -h))).potential();
+    worst = std::max(worst, std::abs((plus - minus) / (2.0 * h) - r[Eigen::Index(k)]));
+  }
+  EXPECT_LT(worst, 1e-8 * r.cwiseAbs().maxCoeff());
+}
+
+TEST(Rod3dLoads, DistributedLoadsOfTheWrongSizeAreRefused) {
+  auto model = general_model(6, true);
+  model.vertex_forces.assign(6, Vec3::Zero());  // one per vertex is 7
+  EXPECT_EQ(rodvv::testing::input_error_parameter_of([&] { rod::validate(model); }), "vertex_forces");
+  model = general_model(6, true);
+  model.edge_moments.assign(7, Vec3::Zero());
+  EXPECT_EQ(rodvv::testing::input_error_parameter_of([&] { rod::validate(model); }), "edge_moments");
+  model.edge_moments.assign(6, Vec3(0.0, std::nan(""), 0.0));
+  EXPECT_EQ(rodvv::testing::input_error_parameter_of([&] { rod::validate(model); }), "edge_moments[1]");
 }
 
 // A rigid motion of the rod (positions and frames) leaves the elastic energy unchanged.

@@ -22,6 +22,7 @@ void register_rod3d_cases(Registry& registry) {
   rod3d_cases::add_lateral_torsional(registry);
   rod3d_cases::add_greenhill(registry);
   rod3d_cases::add_michell_ring(registry);
+  rod3d_cases::add_manufactured(registry);
 }
 
 }  // namespace rodvv::harness

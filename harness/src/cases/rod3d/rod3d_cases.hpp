@@ -19,5 +19,6 @@ void add_bathe_bolourchi(Registry& registry);     // 45-degree bend, out-of-plan
 void add_lateral_torsional(Registry& registry);   // lateral-torsional buckling of a cantilever
 void add_greenhill(Registry& registry);           // Greenhill twisted column, clamped and pinned
 void add_michell_ring(Registry& registry);        // Michell twisted-ring instability (closed rod)
+void add_manufactured(Registry& registry);        // manufactured 3-D equilibrium: distributed force and couple
 
 }  // namespace rodvv::harness::rod3d_cases
