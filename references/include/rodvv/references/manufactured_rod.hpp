@@ -15,7 +15,16 @@
 //   u(s) = strain_mean + strain_sine S + strain_cosine C2     (material components)
 //   n(s) = force_root + force_slope s / L + force_sine S      (world components)
 // and r(s), R(s) integrate r' = R e1, R' = R [u]x from root_position, root_frame by GSL's rk8pd (Prince-
-// Dormand 8(9)) to 1e-14, as a quaternion-free 12-component ODE re-orthonormalised only at the output.
+// Dormand 8(9)) to 1e-14, as a quaternion-free ODE re-orthonormalised only at the output.
+//
+// couple_free: a manufactured equilibrium with c = 0, for a solver that takes distributed forces but no
+// distributed couples (the Super-Helix's point forces). The moment balance then fixes what is not chosen:
+// m' must be normal to t, which is Kirchhoff's twist equation
+//   GJ u0' = -(u x K (u - u_hat))_0,  u0(0) = strain_mean[0] + strain_cosine[0]
+// (integrated with the frame; the twist's other coefficients are unused), and the normal part of n,
+//   n = T(s) t + t x m',  T(s) = tension_root + tension_slope s / L + tension_sine S
+// (force_* unused); then f = -n' = -(T' t + T t' + t' x m' + t x m''), with t' = R (u x e1) and
+// m'' = R ([u]x ([u]x a + K u') + [u']x a + [u]x K u' + K u''), a = K (u - u_hat).
 // tests/data/make_manufactured_rod_table.py integrates the same definition with mpmath (30 digits).
 //
 // InputError for a length or stiffness not finite and > 0, a non-finite vector or a root frame that is
@@ -38,6 +47,8 @@ struct ManufacturedRod {
   Vec3 force_root = Vec3::Zero();
   Vec3 force_slope = Vec3::Zero();
   Vec3 force_sine = Vec3::Zero();
+  bool couple_free = false;  // see above: c = 0, the twist and the normal force follow from the balance
+  double tension_root = 0.0, tension_slope = 0.0, tension_sine = 0.0;  // T(s) of couple_free
 };
 
 struct ManufacturedStation {
@@ -54,12 +65,9 @@ struct ManufacturedStation {
 // The manufactured fields at the stations s (ascending, in [0, L]).
 std::vector<ManufacturedStation> manufactured_stations(const ManufacturedRod& rod, const std::vector<double>& s);
 
-// The strains and the internal force alone (closed forms, no integration).
-Vec3 manufactured_strain(const ManufacturedRod& rod, double s);
-Vec3 manufactured_force(const ManufacturedRod& rod, double s);
 
 // The loads of consecutive cells [breaks[k], breaks[k+1]] (breaks ascending in [0, L]): the force
-// int f ds = n(a) - n(b), exactly, and the couple int c ds by 8-point Gauss-Legendre (GSL's glfixed) on
+// int f ds = n(a) - n(b), exactly (n from the stations), and the couple int c ds by 8-point Gauss-Legendre (GSL's glfixed) on
 // each cell, its stations integrated in one pass.
 std::vector<Vec3> manufactured_cell_forces(const ManufacturedRod& rod, const std::vector<double>& breaks);
 std::vector<Vec3> manufactured_cell_couples(const ManufacturedRod& rod, const std::vector<double>& breaks);
