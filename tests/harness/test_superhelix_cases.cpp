@@ -49,7 +49,42 @@ INSTANTIATE_TEST_SUITE_P(AllSuperHelixCases, SuperHelixCase,
                          });
 
 TEST(SuperHelixCatalogue, HasEveryCase) {
-  EXPECT_EQ(rodvv::testing::case_names_of_family("superhelix").size(), 14u);
+  EXPECT_EQ(rodvv::testing::case_names_of_family("superhelix").size(), 15u);
+}
+
+// superhelix/manufactured's teeth: the solution measured against the fields of EI 0.1 % off (n and m scale with
+// EI, the shape does not) fails the force and moment bounds and no shape gate; the stations read at their
+// element's start instead of its midpoint (where a piecewise-constant strain is second order) turn the strain's
+// order to about 1.
+TEST(SuperHelixGatesHaveTeeth, ManufacturedCaseSeesAStiffnessAndAStationOffset) {
+  for (const std::string defect : {"EI", "station at the element start"}) {
+    Case wrong = named("superhelix/manufactured");
+    const SolveLevel solve = wrong.solve;
+    const MeasureSolution measure = wrong.measure;
+    wrong.run_level = [solve, measure, defect](const Parameters& p, double level) {
+      rodvv::Solution solution = solve(p, level);
+      Parameters measured_at = p;
+      if (defect == "EI") {
+        set_parameter(measured_at, "EI", 1.001 * parameter_value(p, "EI"));
+      } else {
+        auto& rod = std::get<rodvv::SpatialRodSolution>(solution);
+        const double half = 0.5 * rod.length / level;
+        for (double& s : rod.s) s -= half;
+      }
+      return measure(measured_at, level, solution);
+    };
+    const auto result = run_at_default_levels(wrong);
+    const auto failed = [&](const std::string& metric, GateKind kind) {
+      return std::ranges::any_of(result.gates, [&](const auto& g) { return g.metric == metric && g.kind == kind && !g.passed; });
+    };
+    if (defect == "EI") {
+      EXPECT_TRUE(failed("force", GateKind::UpperBound)) << failing_gates(result);
+      EXPECT_TRUE(failed("moment", GateKind::UpperBound)) << failing_gates(result);
+      EXPECT_FALSE(failed("position", GateKind::UpperBound) || failed("frame", GateKind::UpperBound)) << failing_gates(result);
+    } else {
+      EXPECT_TRUE(failed("strain", GateKind::Order)) << failing_gates(result);
+    }
+  }
 }
 
 // The Lagrangian oracle of superhelix/spinning-clamp-oracle against the production step: the step's

@@ -6,10 +6,7 @@
 // Gauss), with n(L), m(L) at the free tip. No closed-form case has a general 3-D shape, a varying twist
 // and a distributed couple: a defect anywhere in the strains, frames, stiffness indices, load lumping or
 // the reported n and m moves this case off its O(h^2).
-//
-// Metrics (reading the solution only: another solver's file is measured like rodvv's own), each the
-// largest deviation from the manufactured field: vertex positions / L (the largest is the tip's), station
-// frames (rotation angle), strains u L, internal force n / F (F = max |n|), moment m / M (M = max |m|).
+// Metrics: ../manufactured_metrics.hpp (positions, frames, strains, n and m against the fields).
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -20,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "../case_builder.hpp"
+#include "../manufactured_metrics.hpp"
 #include "rod3d_cases.hpp"
 #include "rodvv/common/errors.hpp"
 #include "rodvv/references/manufactured_rod.hpp"
@@ -92,60 +90,19 @@ Solution solve(const Parameters& p, double level) {
   return solution;
 }
 
-double rotation_angle(const Mat3& a, const Mat3& b) { return Eigen::AngleAxisd(a.transpose() * b).angle(); }
-
 LevelOutput measure(const Parameters& p, double, const Solution& any) {
-  const auto& solution = solution_as<SpatialRodSolution>(any, "spatial_rod");
-  if (solution.vertex_position.size() < 2 || solution.s.empty())
-    throw InputError("vertices", "the manufactured rod needs vertices and stations, got " +
-                                     std::to_string(solution.vertex_position.size()) + " vertices and " +
-                                     std::to_string(solution.s.size()) + " stations");
-  const ref::ManufacturedRod exact = manufactured_rod(p);
-  const double L = exact.length;
-  const auto at_vertices = ref::manufactured_stations(exact, solution.vertex_s);
-  const auto at_stations = ref::manufactured_stations(exact, solution.s);
-  double position = 0.0, frame = 0.0, strain = 0.0, force = 0.0, moment = 0.0, force_size = 0.0, moment_size = 0.0;
-  for (std::size_t i = 0; i < at_vertices.size(); ++i)
-    position = std::max(position, (solution.vertex_position[i] - at_vertices[i].position).norm() / L);
-  for (std::size_t k = 0; k < at_stations.size(); ++k) {
-    const auto& e = at_stations[k];
-    frame = std::max(frame, rotation_angle(solution.frame[k], e.frame));
-    strain = std::max(strain, (solution.strain_u[k] - e.strain).norm() * L);
-    force = std::max(force, (solution.force_n[k] - e.force).norm());
-    moment = std::max(moment, (solution.moment_m[k] - e.moment).norm());
-    force_size = std::max(force_size, e.force.norm());
-    moment_size = std::max(moment_size, e.moment.norm());
-  }
-  LevelOutput output;
-  output.metrics["position"] = value_sample(position, 1.0);
-  output.metrics["frame"] = value_sample(frame, 1.0);
-  output.metrics["strain"] = value_sample(strain, 1.0);
-  output.metrics["force"] = value_sample(force / force_size, 1.0);
-  output.metrics["moment"] = value_sample(moment / moment_size, 1.0);
-  if (solution.iterations > 0) output.metrics["newton_iterations"] = diagnostic(double(solution.iterations));
-  return output;
+  return measure_manufactured(solution_as<SpatialRodSolution>(any, "spatial_rod"), manufactured_rod(p));
 }
 
 }  // namespace
 
 void add_manufactured(Registry& registry) {
-  std::vector<MetricSpec> metrics{
-      invariant_metric("position", "max |x_i - r(s_i)| / L over the vertices", 2.0),
-      invariant_metric("frame", "max rotation angle between the station frames and R(s)", 2.0),
-      invariant_metric("strain", "max |u - u(s)| L over the stations", 2.0),
-      invariant_metric("force", "max |n - n(s)| / max |n(s)| over the stations", 2.0),
-      invariant_metric("moment", "max |m - m(s)| / max |m(s)| over the stations", 2.0),
-      diagnostic_metric("newton_iterations", "Newton iterations (all load steps)")};
   // Measured at the defaults (2026-11-28) over N = 16 .. 256: every metric at order 2.00 - 2.01 (pairwise 1.996 ..
   // 2.06); at N = 128 position 9.8478e-5, frame 3.1065e-4, strain 5.7188e-4, force 5.3535e-5, moment 1.5187e-4.
-  const std::vector<std::pair<const char*, double>> at_128{
-      {"position", 9.8478e-5}, {"frame", 3.1065e-4}, {"strain", 5.7188e-4}, {"force", 5.3535e-5}, {"moment", 1.5187e-4}};
-  std::vector<GateSpec> gates;
-  for (const auto& [metric, measured] : at_128) {
-    gates.push_back(order_gate(metric, 2.0, "a discrete elastic rod is second order in h = L/N (the loads lumped "
-                                            "exactly per cell, the couples by Gauss)"));
-    gates.push_back(measured_bound(metric, measured, 1.0 / 128.0, 2.0));
-  }
+  std::vector<MetricSpec> metrics = manufactured_metric_specs();
+  std::vector<GateSpec> gates = manufactured_gates(
+      {{"position", 9.8478e-5}, {"frame", 3.1065e-4}, {"strain", 5.7188e-4}, {"force", 5.3535e-5}, {"moment", 1.5187e-4}},
+      1.0 / 128.0, "a discrete elastic rod is second order in h = L/N (the loads lumped exactly per cell, the couples by Gauss)");
   Case c = make_case(
       "rod3d",
       {"rod3d/manufactured", "Manufactured 3-D equilibrium: varying twist and curvatures, distributed force and couple",

@@ -37,5 +37,6 @@ void add_bathe_bolourchi(Registry& registry);    // 45-degree bend, out-of-plane
 void add_lateral_torsional(Registry& registry);  // lateral-torsional buckling of a cantilever
 void add_spinning_clamp_oracle(Registry& registry);  // the step against an independent Lagrangian oracle
 void add_clothoid_energy_decay(Registry& registry);  // the super-clothoid's dynamics: energy loss, dense = O(N)
+void add_manufactured(Registry& registry);          // manufactured 3-D equilibrium with a distributed force
 
 }  // namespace rodvv::harness::superhelix_cases
