@@ -339,6 +339,7 @@ VecX clothoid_velocity_change(const RodModel& model, const DynamicState& state, 
 VecX clothoid_velocity_change(const RodModel& model, const DynamicState& state, double h, DynamicsPath path,
                               const RootMotion& root_motion) {
   validate_clothoid(model);
+  require_statics_only_loads_absent(model, "the super-clothoid dynamics");
   require_positive("h", h);
   check_state(model, state);
   require_finite("state.time", state.time);
@@ -394,6 +395,7 @@ double clothoid_kinetic_energy(const RodModel& model, const ClothoidKinematics& 
 }
 
 double clothoid_total_energy(const RodModel& model, const DynamicState& state) {
+  require_statics_only_loads_absent(model, "the super-clothoid total energy");
   check_state(model, state);
   const ClothoidKinematics kin(model, state.q);
   return clothoid_kinetic_energy(model, kin, state.qdot) + clothoid_elastic_energy(model, state.q) +

@@ -40,7 +40,8 @@ std::vector<std::pair<std::size_t, double>> station_points(std::size_t elements,
 SpatialRodSolution make_clothoid_solution(const RodModel& model, const VecX& q, ClothoidStations stations,
                                           std::string method) {
   validate_clothoid(model);
-  const ClothoidKinematics kinematics(model, q, false);  // element ends only: stations are posed below
+  // Element ends (and the Gauss points when dead point forces load them: they enter n(s) as in make_solution).
+  const ClothoidKinematics kinematics(model, q, !model.point_forces.empty());
   const std::size_t n = model.elements;
   const double ell = kinematics.element_length();
   SpatialRodSolution solution;
@@ -58,6 +59,11 @@ SpatialRodSolution make_clothoid_solution(const RodModel& model, const VecX& q, 
       R = R * local.R;
     }
     append_station(solution, model, s, r, R, a + sigma * b, model.natural_strain);
+    for (std::size_t g = 0; g < model.point_forces.size(); ++g) {  // n(s): the forces beyond s (half at s)
+      const auto& point = kinematics.points()[g];
+      const double at = static_cast<double>(point.element) * ell + point.sigma;
+      solution.force_n.back() += (at > s ? 1.0 : at == s ? 0.5 : 0.0) * model.point_forces[g];
+    }
   }
   append_vertices(solution, kinematics, n, ell);
   return solution;

@@ -8,7 +8,11 @@ namespace rodvv::solvers::superhelix {
 
 void validate_clothoid(const RodModel& model) {
   validate(model);
-  require_statics_only_loads_absent(model, "the super-clothoid");
+  // Dead forces at the Gauss points are statics loads the clothoid takes (clothoid_external_force); its
+  // dynamics refuse them (clothoid_dynamics.cpp). Self-contact and the sliding clamp it has not.
+  RodModel without_point_forces = model;
+  without_point_forces.point_forces.clear();
+  require_statics_only_loads_absent(without_point_forces, "the super-clothoid");
   if (!model.natural_strain_per_element.empty())
     throw InputError("natural_strain_per_element",
                      "invalid parameter 'natural_strain_per_element': must be empty for the super-clothoid "
@@ -64,17 +68,20 @@ VecX clothoid_generalised_force(const ClothoidKinematics& kinematics, const std:
   return force;
 }
 
+bool clothoid_loads_at_points(const RodModel& model) { return !model.gravity.isZero(0.0) || !model.point_forces.empty(); }
+
 VecX clothoid_external_force(const RodModel& model, const ClothoidKinematics& kinematics, double load_factor) {
-  std::vector<Vec3> gravity;
-  if (!model.gravity.isZero(0.0)) {
+  std::vector<Vec3> loads;  // gravity m_g g plus the dead point forces, per Gauss point
+  if (clothoid_loads_at_points(model)) {
     if (kinematics.points().empty())
-      throw InputError("kinematics", "invalid parameter 'kinematics': built without Gauss points, but gravity "
-                                     "is non-zero (construct it with with_points = true)");
-    gravity.reserve(kinematics.points().size());
-    for (const auto& point : kinematics.points()) gravity.push_back(load_factor * point.mass * model.gravity);
+      throw InputError("kinematics", "invalid parameter 'kinematics': built without Gauss points, but gravity or "
+                                     "point forces are non-zero (construct it with with_points = true)");
+    loads.reserve(kinematics.points().size());
+    for (std::size_t g = 0; g < kinematics.points().size(); ++g)
+      loads.push_back(load_factor * (kinematics.points()[g].mass * model.gravity +
+                                     (model.point_forces.empty() ? Vec3::Zero() : model.point_forces[g])));
   }
-  return clothoid_generalised_force(kinematics, gravity, load_factor * model.end_force,
-                                    load_factor * model.end_moment);
+  return clothoid_generalised_force(kinematics, loads, load_factor * model.end_force, load_factor * model.end_moment);
 }
 
 double clothoid_elastic_energy(const RodModel& model, const VecX& q) {
@@ -89,7 +96,7 @@ double clothoid_gravity_energy(const RodModel& model, const ClothoidKinematics& 
 }
 
 VecX clothoid_static_residual(const RodModel& model, const VecX& q, double load_factor) {
-  const ClothoidKinematics kinematics(model, q, !model.gravity.isZero(0.0));
+  const ClothoidKinematics kinematics(model, q, clothoid_loads_at_points(model));
   return clothoid_stiffness(model) * (q - clothoid_natural_strain_vector(model)) -
          clothoid_external_force(model, kinematics, load_factor);
 }
@@ -101,7 +108,7 @@ StaticResult solve_clothoid_static(const RodModel& model, const StaticOptions& o
   NewtonScales scales;
   scales.stiffness_max = K.cwiseAbs().rowwise().sum().maxCoeff();
   scales.length = model.length;
-  const bool with_points = !model.gravity.isZero(0.0);  // Gauss points only carry gravity
+  const bool with_points = clothoid_loads_at_points(model);  // Gauss points carry gravity and point forces
   scales.load_scale =
       clothoid_external_force(model, ClothoidKinematics(model, q0, with_points), 1.0).lpNorm<Eigen::Infinity>();
   const StaticResidual residual = [&model, &K, &q0, with_points](const VecX& x, double lambda) {

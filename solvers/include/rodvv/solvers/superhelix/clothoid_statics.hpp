@@ -8,8 +8,9 @@
 //   K_Q = ell/6 [[2 C, C], [C, 2 C]]  (linear finite-element mass matrix times C),
 // so K is block tridiagonal, SPD. The natural strain kappa0 = model.natural_strain at every node
 // (natural_strain_per_element must be empty: InputError otherwise).
-// Generalised forces of gravity (Gauss points) and the dead end force and moment by the same
-// tip-to-root wrench pass as loads.hpp, with 6 columns per element scattered to its two nodes.
+// Generalised forces of gravity and the model's dead point forces (Gauss points) and the dead end force
+// and moment by the same tip-to-root wrench pass as loads.hpp, with 6 columns per element scattered to its
+// two nodes. (Point forces are statics loads: the clothoid dynamics refuse them.)
 // Residual r(q) = K (q - q0) - lambda F_ext(q).
 #include <vector>
 
@@ -20,8 +21,11 @@
 
 namespace rodvv::solvers::superhelix {
 
-// validate(model) plus the clothoid restriction above.
+// validate(model) plus the clothoid restriction above; InputError "self_contact" or "tip_guide" (which the
+// clothoid does not take).
 void validate_clothoid(const RodModel& model);
+// Whether the model loads its Gauss points (gravity or point forces): the kinematics must then have them.
+bool clothoid_loads_at_points(const RodModel& model);
 
 VecX clothoid_natural_strain_vector(const RodModel& model);
 MatX clothoid_stiffness(const RodModel& model);  // 3(N+1) square, dense storage of the tridiagonal K
