@@ -51,6 +51,19 @@ ref::ManufacturedRod table_rod(double twist_perturbation = 0.0) {
   return rod;
 }
 
+// The station's value a table row names (NaN for a name the station does not have).
+double value_of(const ref::ManufacturedStation& station, const std::string& name, int k) {
+  if (name == "position") return station.position[k];
+  if (name == "twist") return station.strain[0];
+  if (name == "moment") return station.moment[k];
+  if (name == "force") return station.force[k];
+  if (name == "force_density") return station.force_density[k];
+  if (name == "couple_density") return station.couple_density[k];
+  for (int j = 0; j < 3; ++j)
+    if (name == "frame_col" + std::to_string(j)) return station.frame(k, j);
+  return std::nan("");
+}
+
 struct TableCheck {
   double worst = 0.0;
   int failures = 0, rows = 0, moment_failures = 0;
@@ -70,16 +83,8 @@ TableCheck check_table(double twist_perturbation) {
       ADD_FAILURE() << "unknown station " << row[kS];
       continue;
     }
-    const auto& station = stations[at];
     const std::string& name = row[kQuantity];
-    const int k = std::stoi(row[kComponent]);
-    double actual = std::nan("");
-    if (name == "position") actual = station.position[k];
-    if (name == "moment") actual = station.moment[k];
-    if (name == "force_density") actual = station.force_density[k];
-    if (name == "couple_density") actual = station.couple_density[k];
-    for (int j = 0; j < 3; ++j)
-      if (name == "frame_col" + std::to_string(j)) actual = station.frame(k, j);
+    const double actual = value_of(stations[at], name, std::stoi(row[kComponent]));
     const double expected = parse_table_number(row[kValue]);
     const double error = in_epsilons(actual - expected, expected);
     check.worst = std::max(check.worst, std::isnan(error) ? 1e300 : error);
@@ -107,22 +112,11 @@ TableCheck check_couple_free_table(double twist_perturbation) {
   rod.tension_root = 0.9;
   rod.tension_slope = -0.6;
   rod.tension_sine = 0.45;
-  const std::vector<std::string> fractions{"0.25", "0.6"};
   const auto stations = ref::manufactured_stations(rod, {0.25 * rod.length, 0.6 * rod.length});
   TableCheck check;
   for (const auto& row : rodvv::testing::read_reference_table("manufactured_rod_couple_free_reference.csv", kHeader)) {
-    const auto& station = stations[row[kS] == "0.25" ? 0 : 1];
     const std::string& name = row[kQuantity];
-    const int k = std::stoi(row[kComponent]);
-    double actual = std::nan("");
-    if (name == "position") actual = station.position[k];
-    if (name == "twist") actual = station.strain[0];
-    if (name == "moment") actual = station.moment[k];
-    if (name == "force") actual = station.force[k];
-    if (name == "force_density") actual = station.force_density[k];
-    if (name == "couple_density") actual = station.couple_density[k];
-    for (int j = 0; j < 3; ++j)
-      if (name == "frame_col" + std::to_string(j)) actual = station.frame(k, j);
+    const double actual = value_of(stations[row[kS] == "0.25" ? 0 : 1], name, std::stoi(row[kComponent]));
     const double expected = parse_table_number(row[kValue]);
     const double error = in_epsilons(actual - expected, expected);
     check.worst = std::max(check.worst, std::isnan(error) ? 1e300 : error);

@@ -6,20 +6,13 @@
 // Gauss), with n(L), m(L) at the free tip. No closed-form case has a general 3-D shape, a varying twist
 // and a distributed couple: a defect anywhere in the strains, frames, stiffness indices, load lumping or
 // the reported n and m moves this case off its O(h^2).
+//
 // Metrics: ../manufactured_metrics.hpp (positions, frames, strains, n and m against the fields).
-#include <algorithm>
-#include <cmath>
-#include <string>
-#include <utility>
 #include <vector>
-
-#include <Eigen/Geometry>
-#include <fmt/format.h>
 
 #include "../case_builder.hpp"
 #include "../manufactured_metrics.hpp"
 #include "rod3d_cases.hpp"
-#include "rodvv/common/errors.hpp"
 #include "rodvv/references/manufactured_rod.hpp"
 #include "rodvv/solvers/rod3d/solution.hpp"
 #include "rodvv/solvers/rod3d/statics.hpp"
@@ -78,7 +71,7 @@ Solution solve(const Parameters& p, double level) {
   const auto tip = ref::manufactured_stations(exact, {L}).front();
   model.end_force = tip.force;
   model.end_moment = tip.moment;
-  // From the straight rod, the dead loads (and the clamp's frame) ramped in eight continuation steps, as a user
+  // From the straight rod, the dead loads ramped in eight continuation steps, as a user
   // would pose it; the proportional path passes a fold beyond the amplitude window (at 1.5 continuation stops
   // at load factor 0.93).
   rod::StaticOptions options;

@@ -79,27 +79,20 @@ sh::RodModel loaded_model(const ref::ManufacturedRod& exact, std::size_t element
   return model;
 }
 
-Solution solve(const Parameters& p, double level) {
-  const sh::RodModel model = loaded_model(manufactured_rod(p), element_count(level), false);
+SpatialRodSolution solve_on(const Parameters& p, double level, bool clothoid) {
+  const sh::RodModel model = loaded_model(manufactured_rod(p), element_count(level), clothoid);
   sh::StaticOptions options;
   options.load_steps = 8;
   options.tolerance = 1e-12;
-  const auto result = sh::solve_static(model, options);
-  SpatialRodSolution solution = sh::make_solution(model, result.q);
+  const auto result = clothoid ? sh::solve_clothoid_static(model, options) : sh::solve_static(model, options);
+  SpatialRodSolution solution = clothoid ? sh::make_clothoid_solution(model, result.q, sh::ClothoidStations::Midpoints)
+                                         : sh::make_solution(model, result.q);
   solution.iterations = result.iterations;
   return solution;
 }
 
-Solution solve_clothoid(const Parameters& p, double level) {
-  const sh::RodModel model = loaded_model(manufactured_rod(p), element_count(level), true);
-  sh::StaticOptions options;
-  options.load_steps = 8;
-  options.tolerance = 1e-12;
-  const auto result = sh::solve_clothoid_static(model, options);
-  SpatialRodSolution solution = sh::make_clothoid_solution(model, result.q, sh::ClothoidStations::Midpoints);
-  solution.iterations = result.iterations;
-  return solution;
-}
+Solution solve(const Parameters& p, double level) { return solve_on(p, level, false); }
+Solution solve_clothoid(const Parameters& p, double level) { return solve_on(p, level, true); }
 
 LevelOutput measure(const Parameters& p, double, const Solution& any) {
   return measure_manufactured(solution_as<SpatialRodSolution>(any, "spatial_rod"), manufactured_rod(p));
