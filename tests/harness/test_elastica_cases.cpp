@@ -33,8 +33,31 @@ INSTANTIATE_TEST_SUITE_P(AllElasticaCases, ElasticaCase, ::testing::ValuesIn(rod
 TEST(ElasticaCatalogue, HasBothSchemesForEveryProblem) {
   // 4 columns + displacement control + 4 cantilevers + roll-up + tapered + curved, x 2 schemes;
   // + 4 Euler critical-load cases (buckling_cases.cpp) x 2 schemes; + heavy cantilever x 2 schemes;
-  // + 3 Reissner cases (reissner_cases.cpp) x 2 schemes.
-  EXPECT_EQ(rodvv::testing::case_names_of_family("elastica").size(), 40u);
+  // + 3 Reissner cases (reissner_cases.cpp) x 2 schemes; + the manufactured equilibrium x 2 schemes.
+  EXPECT_EQ(rodvv::testing::case_names_of_family("elastica").size(), 42u);
+}
+
+// elastica/manufactured's teeth: measured against the fields of EI 0.1 % off (kappa_hat, and so the shape, do
+// not depend on EI; n and m scale with it), the force and moment bounds fail and the shape's pass.
+TEST(ElasticaGatesHaveTeeth, ManufacturedCaseSeesAStiffnessDefect) {
+  for (const char* scheme : {"polygon", "arcs"}) {
+    Case wrong = named(std::string("elastica/manufactured/") + scheme);
+    const SolveLevel solve = wrong.solve;
+    const MeasureSolution measure = wrong.measure;
+    wrong.run_level = [solve, measure](const Parameters& p, double level) {
+      Parameters measured_at = p;
+      set_parameter(measured_at, "EI", 1.001 * parameter_value(p, "EI"));
+      return measure(measured_at, level, solve(p, level));
+    };
+    const auto result = run_default(wrong);
+    bool force_failed = false, shape_failed = false;
+    for (const auto& gate : result.gates) {
+      if ((gate.metric == "force" || gate.metric == "moment") && !gate.passed) force_failed = true;
+      if ((gate.metric == "theta" || gate.metric == "position") && !gate.passed) shape_failed = true;
+    }
+    EXPECT_TRUE(force_failed) << scheme;
+    EXPECT_FALSE(shape_failed) << scheme;
+  }
 }
 
 // The arcs are exact for the rolled-up circle; the polygon is only second order: under the arcs'

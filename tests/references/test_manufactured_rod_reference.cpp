@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/references/manufactured_planar_rod.hpp"
 #include "rodvv/references/manufactured_rod.hpp"
 #include "rodvv/testing/input_error.hpp"
 #include "rodvv/testing/reference_table.hpp"
@@ -135,6 +136,70 @@ TEST(ManufacturedRodReference, CoupleFreeVariantMatchesMpmathTable) {
   std::cout << "[ summary  ] max error (eps): manufactured rod, couple-free " << check.worst << "\n";
   // GJ 1e-9 off moves the integrated twist (u0' = .../GJ) and f at both stations.
   EXPECT_GE(check_couple_free_table(1e-9).moment_failures, 2);
+}
+
+// The planar manufactured elastica (tests/data/manufactured_planar_rod_reference.csv: r(L) by mp.quad of the
+// closed-form tangent, n and m by odefun from the tip; make_manufactured_planar_rod_table.py), with the
+// field's xy coupling scaled by (1 + perturbation). Same tolerance (the backward integration returns to the
+// root's x to the table's rounding: the closure is a check of its own).
+struct PlanarCheck {
+  double worst = 0.0;
+  int failures = 0, rows = 0;
+};
+
+PlanarCheck check_planar_table(double field_perturbation) {
+  ref::ManufacturedPlanarRod rod;
+  rod.length = 1.6;
+  rod.root_x = 0.3;
+  rod.root_y = -0.5;
+  rod.theta_root = 0.4;
+  rod.theta_slope = 1.1;
+  rod.theta_sine = -0.7;
+  rod.theta_cosine = 0.35;
+  rod.stiffness = 0.9;
+  rod.stiffness_variation = 0.25;
+  rod.field_xx = 1.3;
+  rod.field_xy = -0.6 * (1.0 + field_perturbation);
+  rod.field_y = 2.2;
+  rod.tip_force_x = -0.8;
+  rod.tip_force_y = 1.7;
+  rod.tip_moment = 0.45;
+  const std::vector<std::string> fractions{"0", "0.35", "0.8"};
+  std::vector<double> s;
+  for (const auto& fraction : fractions) s.push_back(std::stod(fraction) * rod.length);
+  const auto stations = ref::manufactured_planar_stations(rod, s);
+  PlanarCheck check;
+  for (const auto& row : rodvv::testing::read_reference_table("manufactured_planar_rod_reference.csv", "s,quantity,value")) {
+    std::size_t at = 0;
+    while (at < fractions.size() && fractions[at] != row[0]) ++at;
+    if (at == fractions.size()) {
+      ADD_FAILURE() << "unknown station " << row[0];
+      continue;
+    }
+    const auto& station = stations[at];
+    const std::string& name = row[1];
+    double actual = std::nan("");
+    if (name == "x") actual = station.x;
+    if (name == "y") actual = station.y;
+    if (name == "force_x") actual = station.force_x;
+    if (name == "force_y") actual = station.force_y;
+    if (name == "moment") actual = station.moment;
+    if (name == "natural_curvature") actual = station.natural_curvature;
+    const double expected = parse_table_number(row[2]);
+    const double error = in_epsilons(actual - expected, expected);
+    check.worst = std::max(check.worst, std::isnan(error) ? 1e300 : error);
+    check.failures += !(error <= kTolerance);
+    ++check.rows;
+  }
+  return check;
+}
+
+TEST(ManufacturedRodReference, PlanarVariantMatchesMpmathTable) {
+  const PlanarCheck check = check_planar_table(0.0);
+  EXPECT_EQ(check.rows, 18);
+  EXPECT_EQ(check.failures, 0) << "worst " << check.worst << " eps";
+  std::cout << "[ summary  ] max error (eps): manufactured planar rod " << check.worst << "\n";
+  EXPECT_GE(check_planar_table(1e-9).failures, 4);  // the field's coupling 1e-9 off moves n and m
 }
 
 TEST(ManufacturedRodReference, PerturbedTwistStiffnessTurnsTheMomentsRed) {

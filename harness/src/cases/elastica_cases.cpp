@@ -29,6 +29,7 @@
 
 #include <fmt/format.h>
 
+#include "elastica/elastica_problems.hpp"
 #include "case_builder.hpp"
 #include "elastica_levels.hpp"
 #include "rodvv/common/errors.hpp"
@@ -543,6 +544,7 @@ std::vector<MetricSpec> noether_metrics(bool has_exact_h, std::optional<double> 
 }  // namespace
 
 void register_elastica_cases(Registry& registry) {
+  elastica_cases::add_manufactured(registry);
   for (e2d::Scheme scheme : kSchemes) {
     const std::string id(e2d::scheme_id(scheme));
     for (double degrees : {10.0, 60.0, 120.0, 170.0}) {
