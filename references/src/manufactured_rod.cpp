@@ -31,7 +31,7 @@ Mat3 skew(const Vec3& v) {
 }
 
 // The chosen parts of u, u', u'' (closed forms); in couple_free the twist entries are replaced by the
-// integrated twist and its rates (twist_rates).
+// integrated twist and its rates (twist_rate, twist_second).
 Vec3 chosen_strain(const ManufacturedRod& rod, double s) {
   const double L = rod.length;
   return rod.strain_mean + rod.strain_sine * std::sin(kPi * s / L) + rod.strain_cosine * std::cos(2.0 * kPi * s / L);
