@@ -10,9 +10,7 @@ void validate_clothoid(const RodModel& model) {
   validate(model);
   // Dead forces at the Gauss points are statics loads the clothoid takes (clothoid_external_force); its
   // dynamics refuse them (clothoid_dynamics.cpp). Self-contact and the sliding clamp it has not.
-  RodModel without_point_forces = model;
-  without_point_forces.point_forces.clear();
-  require_statics_only_loads_absent(without_point_forces, "the super-clothoid");
+  require_no_self_contact_or_tip_guide(model, "the super-clothoid");
   if (!model.natural_strain_per_element.empty())
     throw InputError("natural_strain_per_element",
                      "invalid parameter 'natural_strain_per_element': must be empty for the super-clothoid "

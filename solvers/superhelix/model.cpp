@@ -78,6 +78,10 @@ void require_statics_only_loads_absent(const RodModel& model, const char* what) 
   if (!model.point_forces.empty())
     throw InputError("point_forces", std::string("invalid parameter 'point_forces': ") + what +
                                          " does not take forces at the Gauss points (statics only); must be empty");
+  require_no_self_contact_or_tip_guide(model, what);
+}
+
+void require_no_self_contact_or_tip_guide(const RodModel& model, const char* what) {
   if (model.self_contact.radius != 0.0)
     throw InputError("self_contact", std::string("invalid parameter 'self_contact': ") + what +
                                          " does not take self-contact (statics only); its radius must be 0");

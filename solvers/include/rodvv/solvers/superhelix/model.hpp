@@ -74,6 +74,8 @@ void validate(const RodModel& model);
 // InputError "point_forces", "self_contact" or "tip_guide" naming `what` (the dynamics, the total energy,
 // the super-clothoid, inverse statics), which do not take these statics-only loads.
 void require_statics_only_loads_absent(const RodModel& model, const char* what);
+// The same for self-contact and the sliding clamp alone (the super-clothoid's statics takes point forces).
+void require_no_self_contact_or_tip_guide(const RodModel& model, const char* what);
 
 // (rho I0, rho I1, rho I2) of a solid elliptic section of line density rho S with semi-axis a along
 // n1 and b along n2 (S = pi a b, I1 = pi a b^3 / 4, I2 = pi a^3 b / 4, I0 = I1 + I2):
