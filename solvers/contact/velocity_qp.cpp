@@ -25,10 +25,12 @@ void check_sizes(Eigen::Index n, const VecX& R, const MatX& J, const VecX& c) {
 }
 
 // v = v_free + M^-1 J^T lambda, with lambda from the dual LCP (W = J M^-1 J^T, b = J v_free - c).
-VelocityQpSolution solve_dual(const VecX& v_free, const MatX& Minv_Jt, const MatX& W, const MatX& J,
-                              const VecX& c, LcpMethod method, const LcpSettings& settings) {
+VelocityQpSolution solve_dual(const VecX& v_free, const MatX& Minv_Jt, MatX W, const MatX& J,
+                              const VecX& c, LcpMethod method, const LcpSettings& settings, double compliance) {
+  require_non_negative("compliance", compliance);
   VelocityQpSolution solution;
   const VecX b = J * v_free - c;
+  if (compliance > 0.0 && W.rows() > 0) W.diagonal().array() += compliance * W.diagonal().maxCoeff();
   const LcpSolution lcp = solve_lcp(W, b, method, settings);
   solution.lambda = lcp.lambda;
   solution.v = v_free + Minv_Jt * lcp.lambda;
@@ -41,7 +43,7 @@ VelocityQpSolution solve_dual(const VecX& v_free, const MatX& Minv_Jt, const Mat
 }  // namespace
 
 VelocityQpSolution solve_velocity_qp(const MatX& M, const VecX& R, const MatX& J, const VecX& c,
-                                     LcpMethod method, const LcpSettings& settings) {
+                                     LcpMethod method, const LcpSettings& settings, double compliance) {
   if (M.rows() != M.cols() || M.rows() == 0)
     throw InputError("M", "the mass matrix M must be square with at least one row");
   if (!M.allFinite()) throw InputError("M", "the mass matrix M must be finite");
@@ -56,7 +58,7 @@ VelocityQpSolution solve_velocity_qp(const MatX& M, const VecX& R, const MatX& J
   const MatX X = llt.matrixL().solve(J.transpose());  // L^-1 J^T, so W = X^T X is symmetric PSD
   const MatX W = X.transpose() * X;
   const MatX Minv_Jt = llt.matrixU().solve(X);
-  return solve_dual(v_free, Minv_Jt, W, J, c, method, settings);
+  return solve_dual(v_free, Minv_Jt, W, J, c, method, settings, compliance);
 }
 
 VelocityQpSolution solve_velocity_qp_lumped(const VecX& m, const VecX& R, const MatX& J, const VecX& c,
@@ -71,7 +73,7 @@ VelocityQpSolution solve_velocity_qp_lumped(const VecX& m, const VecX& R, const 
   const MatX Minv_Jt = m_inv.asDiagonal() * J.transpose();
   const MatX W = J * Minv_Jt;
   const MatX W_sym = 0.5 * (W + W.transpose());
-  return solve_dual(v_free, Minv_Jt, W_sym, J, c, method, settings);
+  return solve_dual(v_free, Minv_Jt, W_sym, J, c, method, settings, 0.0);
 }
 
 }  // namespace rodvv::solvers::contact

@@ -1,3 +1,4 @@
+#include "dense_step_system.hpp"
 #include "step_guard.hpp"
 #include "rodvv/solvers/superhelix/dynamics.hpp"
 
@@ -23,7 +24,9 @@ using Vec6 = Eigen::Matrix<double, 6, 1>;
 using Mat63 = Eigen::Matrix<double, 6, 3>;
 using Mat36 = Eigen::Matrix<double, 3, 6>;
 
-void check_state(const RodModel& model, const DynamicState& state, double h) {
+}  // namespace
+
+void detail::check_step_input(const RodModel& model, const DynamicState& state, double h) {
   validate(model);
   require_statics_only_loads_absent(model, "the Super-Helix dynamics");
   require_positive("h", h);
@@ -34,6 +37,10 @@ void check_state(const RodModel& model, const DynamicState& state, double h) {
   if (!state.q.allFinite()) throw InputError("state.q", "invalid parameter 'state.q': must be finite");
   if (!state.qdot.allFinite()) throw InputError("state.qdot", "invalid parameter 'state.qdot': must be finite");
 }
+
+namespace {
+
+using detail::check_step_input;
 
 // What the root-to-tip pass knows about one Gauss point, in the base frame of its element.
 struct LocalPointRates {
@@ -147,7 +154,9 @@ VecX elastic_rhs(const RodModel& model, const DynamicState& state, double h, Vec
   return -h * k.cwiseProduct(state.q - natural_strain_vector(model)) - damping_diagonal.cwiseProduct(state.qdot);
 }
 
-VecX dense_velocity_change(const RodModel& model_in, const DynamicState& state, double h, const RootState& root) {
+}  // namespace
+
+detail::DenseStepSystem detail::dense_step_system(const RodModel& model_in, const DynamicState& state, double h, const RootState& root) {
   const RodModel model = model_with_root(model_in, root);
   const Kinematics kinematics(model, state.q);
   const bool rotation = has_rotational_inertia(model);
@@ -179,10 +188,17 @@ VecX dense_velocity_change(const RodModel& model_in, const DynamicState& state, 
   VecX damping;
   const VecX rhs = elastic_rhs(model, state, h, damping) + h * loads;
   M.diagonal() += damping;
-  const Eigen::LDLT<MatX> ldlt(M);
+  return {std::move(M), rhs};
+}
+
+namespace {
+
+VecX dense_velocity_change(const RodModel& model, const DynamicState& state, double h, const RootState& root) {
+  const detail::DenseStepSystem system = detail::dense_step_system(model, state, h, root);
+  const Eigen::LDLT<MatX> ldlt(system.matrix);
   if (ldlt.info() != Eigen::Success)
     throw SolverError("superhelix dense step", "LDL^T of M + D failed", 0, 0.0);
-  return ldlt.solve(rhs);
+  return ldlt.solve(system.rhs);
 }
 
 // Per-element data of the articulated-body recursion (ALGORITHMS.md §1.6), filled by the root-to-tip
@@ -405,7 +421,7 @@ VecX velocity_change(const RodModel& model, const DynamicState& state, double h,
 
 VecX velocity_change(const RodModel& model, const DynamicState& state, double h, DynamicsPath path,
                      const RootMotion& root_motion) {
-  check_state(model, state, h);
+  check_step_input(model, state, h);
   require_finite("state.time", state.time);
   const RootState root = root_motion.state_at(model, state.time);
   return path == DynamicsPath::Dense ? dense_velocity_change(model, state, h, root)

@@ -27,20 +27,6 @@ constexpr const char* kMethod = "superhelix frictional statics";
 
 bool unit(const Vec3& v) { return v.allFinite() && std::abs(v.norm() - 1.0) <= 1e-10; }
 
-void check_obstacles(const std::vector<RigidObstacle>& obstacles) {
-  for (std::size_t i = 0; i < obstacles.size(); ++i) {
-    const RigidObstacle& o = obstacles[i];
-    const std::string which = "invalid parameter 'obstacles': obstacle " + std::to_string(i);
-    if (!o.point.allFinite()) throw InputError("obstacles", which + " has a point that is not finite");
-    if (o.shape != RigidObstacle::Shape::Ball && !unit(o.direction))
-      throw InputError("obstacles", which + " must have a finite unit direction (|d| - 1 within 1e-10)");
-    if (o.shape != RigidObstacle::Shape::Plane && !(std::isfinite(o.radius) && o.radius > 0.0))
-      throw InputError("obstacles", which + " has radius " + format_value(o.radius) + ": must be finite and > 0");
-    if (!(std::isfinite(o.mu) && o.mu >= 0.0))
-      throw InputError("obstacles", which + " has mu " + format_value(o.mu) + ": must be finite and >= 0");
-  }
-}
-
 // A candidate contact at a Gauss point, at the current iterate.
 struct Candidate {
   std::size_t point, obstacle;
@@ -144,6 +130,20 @@ std::optional<VecX> active_set_contact_solve(const MatX& W, const VecX& b, const
 
 }  // namespace
 
+void validate_obstacles(const std::vector<RigidObstacle>& obstacles) {
+  for (std::size_t i = 0; i < obstacles.size(); ++i) {
+    const RigidObstacle& o = obstacles[i];
+    const std::string which = "invalid parameter 'obstacles': obstacle " + std::to_string(i);
+    if (!o.point.allFinite()) throw InputError("obstacles", which + " has a point that is not finite");
+    if (o.shape != RigidObstacle::Shape::Ball && !unit(o.direction))
+      throw InputError("obstacles", which + " must have a finite unit direction (|d| - 1 within 1e-10)");
+    if (o.shape != RigidObstacle::Shape::Plane && !(std::isfinite(o.radius) && o.radius > 0.0))
+      throw InputError("obstacles", which + " has radius " + format_value(o.radius) + ": must be finite and > 0");
+    if (!(std::isfinite(o.mu) && o.mu >= 0.0))
+      throw InputError("obstacles", which + " has mu " + format_value(o.mu) + ": must be finite and >= 0");
+  }
+}
+
 ObstacleProximity obstacle_proximity(const RigidObstacle& obstacle, const Vec3& x) {
   ObstacleProximity result;
   const Vec3 offset = x - obstacle.point;
@@ -214,7 +214,7 @@ FrictionalStaticResult solve_frictional_increment(const RodModel& model, const s
   if (model.self_contact.radius > 0.0)
     throw InputError("self_contact", "invalid parameter 'self_contact': frictional statics takes rigid obstacles "
                                      "only; self_contact.radius must be 0");
-  check_obstacles(obstacles);
+  validate_obstacles(obstacles);
   check_previous(model, obstacles, previous);
   require_non_negative("contact_distance", options.contact_distance);
   require_at_least("max_iterations", options.max_iterations, 1);

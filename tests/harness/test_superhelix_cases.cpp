@@ -15,6 +15,7 @@
 
 #include "case_test_support.hpp"
 #include "superhelix/lagrangian_oracle.hpp"
+#include "superhelix/touchdown.hpp"
 #include "rodvv/solvers/superhelix/dynamics.hpp"
 #include "rodvv/solvers/superhelix/root_motion.hpp"
 #include "rodvv/common/errors.hpp"
@@ -49,7 +50,7 @@ INSTANTIATE_TEST_SUITE_P(AllSuperHelixCases, SuperHelixCase,
                          });
 
 TEST(SuperHelixCatalogue, HasEveryCase) {
-  EXPECT_EQ(rodvv::testing::case_names_of_family("superhelix").size(), 16u);
+  EXPECT_EQ(rodvv::testing::case_names_of_family("superhelix").size(), 17u);
 }
 
 // superhelix/manufactured's teeth: the solution measured against the fields of EI 0.1 % off (n and m scale with
@@ -85,6 +86,25 @@ TEST(SuperHelixGatesHaveTeeth, ManufacturedCaseSeesAStiffnessAndAStationOffset) 
       EXPECT_TRUE(failed("strain", GateKind::Order)) << failing_gates(result);
     }
   }
+}
+
+// superhelix/touchdown's teeth: the settled rod measured against the reference of a stiffness 1 % off (l and the
+// loads scale as EI^(1/4), the shape as well) fails the moment, reaction and shape bounds, and the comparison
+// with the quasi-static solver stays green (the solver is not changed).
+TEST(SuperHelixGatesHaveTeeth, TouchdownSeesAStiffnessOnePercentOff) {
+  Case wrong = named("superhelix/touchdown");
+  wrong.run_level = [](const Parameters& p, double level) {
+    superhelix_cases::TouchdownReference off{parameter_value(p, "L"), 1.01 * parameter_value(p, "EI"),
+                                             parameter_value(p, "w"), parameter_value(p, "delta")};
+    return superhelix_cases::touchdown_level(p, level, off);
+  };
+  const auto result = run_at_default_levels(wrong);
+  const auto failed = [&](const std::string& metric, GateKind kind) {
+    return std::ranges::any_of(result.gates, [&](const auto& g) { return g.metric == metric && g.kind == kind && !g.passed; });
+  };
+  for (const std::string metric : {"clamp_moment", "floor_reaction", "lifted_shape"})
+    EXPECT_TRUE(failed(metric, GateKind::UpperBound)) << metric << failing_gates(result);
+  EXPECT_FALSE(failed("rest_vs_statics", GateKind::UpperBound)) << failing_gates(result);
 }
 
 // The Lagrangian oracle of superhelix/spinning-clamp-oracle against the production step: the step's

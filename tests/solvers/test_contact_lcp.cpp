@@ -248,6 +248,30 @@ TEST(VelocityQp, RandomProblemsSatisfyKktAndDenseMatchesLumped) {
   }
 }
 
+// A compliance eps (relative to max W_ii) softens each constraint to J v - c + eps max(W_ii) lambda >= 0,
+// complementary to lambda: on the half-plane problem above (W = 2) the impulse is 1 / (2 (1 + eps)) in closed
+// form and the gap -eps max(W_ii) lambda; two identical rows (a redundant contact, W singular) share the
+// impulse equally, the projection unchanged to O(eps).
+TEST(VelocityQp, ComplianceSoftensTheConstraintAsDocumented) {
+  const MatX M = MatX::Identity(2, 2);
+  const VecX R = (VecX(2) << -1, -1).finished();
+  const MatX J = (MatX(1, 2) << -1, -1).finished();
+  const VecX c = VecX::Constant(1, -1.0);
+  const double eps = 1e-3;
+  const auto s = contact::solve_velocity_qp(M, R, J, c, LcpMethod::Lemke, {}, eps);
+  EXPECT_TRUE(is_close(s.lambda(0), 0.5 / (1.0 + eps), 0.0, 1e-15));
+  EXPECT_TRUE(is_close(s.gap(0), -eps * 2.0 * s.lambda(0), 0.0, 1e-15));
+  const MatX twice = (MatX(2, 2) << -1, -1, -1, -1).finished();
+  const VecX c2 = VecX::Constant(2, -1.0);
+  const auto redundant = contact::solve_velocity_qp(M, R, twice, c2, LcpMethod::Lemke, {}, 1e-9);
+  EXPECT_TRUE(is_close(redundant.lambda(0), redundant.lambda(1), 0.0, 1e-12));
+  EXPECT_TRUE(is_close(redundant.v(0), 0.5, 0.0, 1e-8));
+  try {
+    contact::solve_velocity_qp(M, R, J, c, LcpMethod::Lemke, {}, -1e-9);
+    ADD_FAILURE();
+  } catch (const rodvv::InputError& e) { EXPECT_EQ(e.parameter(), "compliance"); }
+}
+
 TEST(VelocityQp, InfeasibleConstraintsThrowSolverError) {
   // v >= 1 and -v >= 0 cannot both hold.
   const MatX M = MatX::Identity(1, 1);

@@ -1127,6 +1127,7 @@ void register_superhelix_cases(Registry& registry) {
   }
   superhelix_cases::add_bathe_bolourchi(registry);
   superhelix_cases::add_manufactured(registry);
+  superhelix_cases::add_touchdown(registry);
   superhelix_cases::add_lateral_torsional(registry);
   superhelix_cases::add_spinning_clamp_oracle(registry);
   superhelix_cases::add_clothoid_energy_decay(registry);

@@ -38,5 +38,6 @@ void add_lateral_torsional(Registry& registry);  // lateral-torsional buckling o
 void add_spinning_clamp_oracle(Registry& registry);  // the step against an independent Lagrangian oracle
 void add_clothoid_energy_decay(Registry& registry);  // the super-clothoid's dynamics: energy loss, dense = O(N)
 void add_manufactured(Registry& registry);          // manufactured 3-D equilibrium with a distributed force
+void add_touchdown(Registry& registry);             // lands on a floor and settles: velocity-level contact
 
 }  // namespace rodvv::harness::superhelix_cases

@@ -22,8 +22,13 @@ struct VelocityQpSolution {
 };
 
 // Dense M (Cholesky); throws InputError if M is not symmetric positive definite or sizes disagree.
+// `compliance` (>= 0, InputError otherwise) softens every constraint to J v - c + eps lambda >= 0 with
+// eps = compliance x max_i W_ii (constraint-force mixing): redundant constraints - a rod lying on a plane
+// at more points than it has ways to leave it - make W singular, where Lemke's pivoting stalls on its
+// round-off; a small compliance makes W definite and moves the gaps by eps lambda.
 VelocityQpSolution solve_velocity_qp(const MatX& M, const VecX& R, const MatX& J, const VecX& c,
-                                     LcpMethod method = LcpMethod::Lemke, const LcpSettings& settings = {});
+                                     LcpMethod method = LcpMethod::Lemke, const LcpSettings& settings = {},
+                                     double compliance = 0.0);
 
 // Lumped (diagonal) M given by its diagonal m > 0: O(k^2 n) to form W, the case of the Eulerian solid.
 VelocityQpSolution solve_velocity_qp_lumped(const VecX& m, const VecX& R, const MatX& J, const VecX& c,

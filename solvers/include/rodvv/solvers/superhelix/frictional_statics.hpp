@@ -76,6 +76,10 @@ struct ObstacleProximity {
 };
 ObstacleProximity obstacle_proximity(const RigidObstacle& obstacle, const Vec3& x);
 
+// InputError "obstacles" naming the obstacle: a point that is not finite, a direction that is not a unit
+// vector to 1e-10 (plane, cylinder), a radius not > 0 (ball, cylinder), mu < 0 or not finite.
+void validate_obstacles(const std::vector<RigidObstacle>& obstacles);
+
 struct FrictionalStaticOptions {
   double contact_distance = 0.0;    // candidate contacts: gap <= this; 0: one element length
   std::size_t max_iterations = 200;
