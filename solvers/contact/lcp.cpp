@@ -196,4 +196,42 @@ LcpSolution solve_lcp(const MatX& W, const VecX& b, LcpMethod method, const LcpS
   return method == LcpMethod::Lemke ? solve_lcp_lemke(W, b, settings) : solve_lcp_pgs(W, b, settings);
 }
 
+LcpSolution solve_lcp_verified(const MatX& W, const VecX& b, LcpMethod method, const LcpSettings& settings,
+                               double accuracy, std::size_t* rescaled) {
+  require_open_interval("accuracy", accuracy, 0.0, 1.0);
+  const bool lemke = method == LcpMethod::Lemke;
+  const auto accurate = [&](const LcpSolution& s) {
+    return b.size() == 0 || s.residual <= accuracy * b.cwiseAbs().maxCoeff();
+  };
+  LcpSolution s;
+  bool ok = false;
+  try {
+    s = solve_lcp(W, b, method, settings);
+    ok = accurate(s);
+  } catch (const SolverError&) {
+    if (!lemke) throw;
+  }
+  if (lemke && !ok) {
+    if (rescaled != nullptr) ++*rescaled;
+    const Eigen::Index m = b.size();
+    VecX d(m);
+    for (Eigen::Index i = 0; i < m; ++i) d[i] = W(i, i) > 0.0 ? 1.0 / std::sqrt(W(i, i)) : 1.0;
+    MatX scaled = d.asDiagonal() * W * d.asDiagonal();
+    scaled = (0.5 * (scaled + scaled.transpose())).eval();  // exactly symmetric again
+    const std::size_t unscaled_pivots = s.iterations;
+    s = solve_lcp_lemke(scaled, d.cwiseProduct(b), settings);
+    s.iterations += unscaled_pivots;
+    s.lambda = d.cwiseProduct(s.lambda);
+    s.w = W * s.lambda + b;
+    s.residual = natural_map_residual(W, s.lambda, s.w);
+    s.fischer_burmeister = fischer_burmeister_residual(W, s.lambda, s.w);
+  }
+  if (!accurate(s))
+    throw SolverError(lemke ? "lcp-lemke" : "lcp-pgs",
+                      "inaccurate LCP solution: natural-map residual " + format_value(s.residual) + " > " +
+                          format_value(accuracy) + " max|b|",
+                      s.iterations, s.residual);
+  return s;
+}
+
 }  // namespace rodvv::solvers::contact

@@ -31,7 +31,9 @@ VelocityQpSolution solve_dual(const VecX& v_free, const MatX& Minv_Jt, MatX W, c
   VelocityQpSolution solution;
   const VecX b = J * v_free - c;
   if (compliance > 0.0 && W.rows() > 0) W.diagonal().array() += compliance * W.diagonal().maxCoeff();
-  const LcpSolution lcp = solve_lcp(W, b, method, settings);
+  // Verified (lcp.hpp): Lemke again on the Jacobi-scaled W when its result is off by more than 1e-6 max|b|
+  // (a Delassus matrix in the units of a massive rod is ~1e-12, below Lemke's absolute tolerances).
+  const LcpSolution lcp = solve_lcp_verified(W, b, method, settings, 1e-6);
   solution.lambda = lcp.lambda;
   solution.v = v_free + Minv_Jt * lcp.lambda;
   solution.gap = J * solution.v - c;

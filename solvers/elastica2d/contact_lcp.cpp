@@ -103,59 +103,19 @@ Eigen::SparseMatrix<double> tangent(const DiscreteLagrangian& lag, const std::ve
 // factor >= 140 from both.
 constexpr double kLcpAccuracy = 1e-6;
 
-bool accurate(const contact::LcpSolution& s, const VecX& b) {
-  return b.size() == 0 || s.residual <= kLcpAccuracy * b.cwiseAbs().maxCoeff();
-}
 
-// The condensed LCP, with a verified result. Lemke first runs on W itself; if its solution is
-// inaccurate it runs again on the Jacobi-scaled problem (D W D, D b), D = diag(W)^-1/2 (unit
-// diagonal; zero rows, the pairs at a pinned node, keep D = 1), and lambda = D mu. Why: diag W
-// spans the nodal compliances, from ~h^3 / EI next to a support to ~L^3 / EI mid-span (a ratio
-// ~N^3), and on a line contact the Delassus block of the flat run is near-singular (condition ~
-// (run / h)^4), while the tableau's pivot and tie tolerances are absolute for entries below 1.
-// Unscaled, Lemke ended (z0 left the basis) on "solutions" with a natural-map residual of 5e-3 ..
-// 2e-1 x max|b| (cavity line contact, polygon, once at N = 128, 2-3 times at N = 256, in load
-// steps 7 and 8): a wrong set of loaded pairs and a Newton step |dz| ~ 25 on a rod of length 1.
-// The earlier version took these steps: at N = 128 it recovered, at N = 256 the iterate became
-// unstable even with its loaded pairs held and the solve ended in SolverError. Scaled, the worst
-// residual measured is 6e-9 x max|b| (N = 512). The unscaled solve stays first: it is the one
-// that leaves the zero-force pairs of a flat run exactly non-basic (lambda = 0, PHYSICS.md §1.2),
-// where the scaled one may return them basic at round-off, and it keeps the earlier results
-// wherever it was accurate. A SolverError of the unscaled Lemke (ray, pivot limit) also leads to
-// the scaled solve. PGS is invariant under the scaling (its update is lambda_i - w_i / W_ii) and
-// runs on W only. Residuals are reported in the units of W. Inaccurate after both: SolverError.
+// The condensed LCP, with a verified result (contact::solve_lcp_verified: Lemke on W, then on the
+// Jacobi-scaled problem if inaccurate). Why the scaling is needed here: diag W spans the nodal
+// compliances, from ~h^3 / EI next to a support to ~L^3 / EI mid-span (a ratio ~N^3), and on a line
+// contact the Delassus block of the flat run is near-singular (condition ~(run / h)^4). Unscaled, Lemke
+// ended on "solutions" with a natural-map residual of 5e-3 .. 2e-1 x max|b| (cavity line contact,
+// polygon, once at N = 128, 2-3 times at N = 256, in load steps 7 and 8): a wrong set of loaded pairs
+// and a Newton step |dz| ~ 25 on a rod of length 1. The earlier version took these steps: at N = 128 it
+// recovered, at N = 256 the iterate became unstable even with its loaded pairs held and the solve ended
+// in SolverError. Scaled, the worst residual measured is 6e-9 x max|b| (N = 512).
 contact::LcpSolution solve_condensed(const MatX& W, const VecX& b, const ContactOptions& options,
                                      std::size_t& rescaled) {
-  const bool lemke = options.lcp == contact::LcpMethod::Lemke;
-  contact::LcpSolution s;
-  bool ok = false;
-  try {
-    s = contact::solve_lcp(W, b, options.lcp, options.lcp_settings);
-    ok = accurate(s, b);
-  } catch (const SolverError&) {
-    if (!lemke) throw;
-  }
-  if (lemke && !ok) {
-    ++rescaled;
-    const Eigen::Index m = b.size();
-    VecX d(m);
-    for (Eigen::Index i = 0; i < m; ++i) d[i] = W(i, i) > 0.0 ? 1.0 / std::sqrt(W(i, i)) : 1.0;
-    MatX scaled = d.asDiagonal() * W * d.asDiagonal();
-    scaled = (0.5 * (scaled + scaled.transpose())).eval();  // exactly symmetric again
-    const std::size_t unscaled_pivots = s.iterations;
-    s = contact::solve_lcp_lemke(scaled, d.cwiseProduct(b), options.lcp_settings);
-    s.iterations += unscaled_pivots;
-    s.lambda = d.cwiseProduct(s.lambda);
-    s.w = W * s.lambda + b;
-    s.residual = contact::natural_map_residual(W, s.lambda, s.w);
-    s.fischer_burmeister = contact::fischer_burmeister_residual(W, s.lambda, s.w);
-  }
-  if (!accurate(s, b))
-    throw SolverError(lemke ? "lcp-lemke" : "lcp-pgs",
-                      "inaccurate LCP solution: natural-map residual " + format_value(s.residual) +
-                          " > 1e-6 max|b|",
-                      s.iterations, s.residual);
-  return s;
+  return contact::solve_lcp_verified(W, b, options.lcp, options.lcp_settings, kLcpAccuracy, &rescaled);
 }
 
 std::string lcp_name(contact::LcpMethod m) {

@@ -118,6 +118,45 @@ TEST(Lcp, RandomSemidefiniteProblemsLemkeIsComplementaryAndPgsAgreesOnWLambda) {
   EXPECT_EQ(solved, 200);
 }
 
+// Lemke's tableau tolerances are absolute, so the same problem in other units (W in 1e-12, the Delassus
+// matrix of a massive rod) can end on a wrong "solution"; solve_lcp_verified catches that by its residual and
+// solves the Jacobi-scaled problem: W lambda matches the unit-scale problem's to 1e-12 relative at W units
+// 1e-12 and 1e12 and b units 1e-6 and 1e6. Plain Lemke fails at least one of them (the verification has work
+// to do), and an accuracy out of (0, 1) is refused by name.
+TEST(Lcp, VerifiedSolveIsIndependentOfTheUnitsOfWAndB) {
+  std::mt19937 rng(11);
+  int plain_failures = 0;
+  for (int trial = 0; trial < 50; ++trial) {
+    const Eigen::Index n = 2 + trial % 6;
+    const auto p = random_lcp(rng, n, n, 0.1);
+    VecX lambda_star = VecX::Zero(n), w_star = VecX::Zero(n);
+    for (Eigen::Index i = 0; i < n; ++i) (i % 2 ? lambda_star(i) : w_star(i)) = 0.5 + 0.1 * double(i);
+    const VecX b = w_star - p.W * lambda_star;
+    const auto unit = contact::solve_lcp_verified(p.W, b, LcpMethod::Lemke, {}, 1e-6);
+    for (const auto& [w_unit, b_unit] : {std::pair{1e-12, 1e-6}, std::pair{1e12, 1e6}, std::pair{1e-12, 1e6}}) {
+      std::size_t rescaled = 0;
+      const auto scaled =
+          contact::solve_lcp_verified(w_unit * p.W, b_unit * b, LcpMethod::Lemke, {}, 1e-6, &rescaled);
+      const VecX wl = p.W * (scaled.lambda * (w_unit / b_unit)), wl_unit = p.W * unit.lambda;
+      for (Eigen::Index i = 0; i < n; ++i)
+        EXPECT_TRUE(is_close(wl(i), wl_unit(i), 0.0, 1e-12 * (1.0 + wl_unit.cwiseAbs().maxCoeff()), i))
+            << "trial " << trial << " W unit " << w_unit << " b unit " << b_unit;
+      try {
+        const auto plain = contact::solve_lcp_lemke(w_unit * p.W, b_unit * b);
+        const VecX wp = p.W * (plain.lambda * (w_unit / b_unit));
+        if ((wp - wl_unit).cwiseAbs().maxCoeff() > 1e-6 * (1.0 + wl_unit.cwiseAbs().maxCoeff())) ++plain_failures;
+      } catch (const rodvv::SolverError&) {
+        ++plain_failures;
+      }
+    }
+  }
+  EXPECT_GT(plain_failures, 0);
+  try {
+    contact::solve_lcp_verified(MatX::Identity(1, 1), -VecX::Ones(1), LcpMethod::Lemke, {}, 0.0);
+    ADD_FAILURE();
+  } catch (const rodvv::InputError& e) { EXPECT_EQ(e.parameter(), "accuracy"); }
+}
+
 TEST(Lcp, DegenerateProblems) {
   // Non-unique lambda: W = [[1,1],[1,1]], b = (-1,-1): any lambda >= 0 with lambda_0 + lambda_1 = 1.
   MatX W(2, 2);

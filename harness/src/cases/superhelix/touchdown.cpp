@@ -182,10 +182,11 @@ Window touchdown_window() {
             const double l = t.lifted();
             if (!(l >= 0.25 * t.L && l <= 0.9 * t.L))
               throw InputError("delta", fmt::format("invalid parameter 'delta' = {}: the lifted length l = (72 EI delta / "
-                                                    "w)^(1/4) = {} must be in [0.25, 0.9] L = [{}, {}] (the rod must "
-                                                    "lift off and land)",
-                                                    format_value(t.delta), format_value(l), format_value(0.25 * t.L),
-                                                    format_value(0.9 * t.L)));
+                                                    "w)^(1/4) = {} (EI = {}, w = {}) must be in [0.25, 0.9] L = [{}, {}] "
+                                                    "(L = {}: the rod must lift off and land)",
+                                                    format_value(t.delta), format_value(l), format_value(t.EI),
+                                                    format_value(t.w), format_value(0.25 * t.L), format_value(0.9 * t.L),
+                                                    format_value(t.L)));
             if (!(t.delta <= 2e-3 * l))
               throw InputError("delta", fmt::format("invalid parameter 'delta' = {}: delta / l = {} must be <= 2e-3 "
                                                     "(the small-deflection reference's error (delta / l)^2)",

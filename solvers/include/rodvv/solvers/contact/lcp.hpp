@@ -50,4 +50,17 @@ LcpSolution solve_lcp_lemke(const MatX& W, const VecX& b, const LcpSettings& set
 enum class LcpMethod { ProjectedGaussSeidel, Lemke };
 LcpSolution solve_lcp(const MatX& W, const VecX& b, LcpMethod method, const LcpSettings& settings = {});
 
+// solve_lcp with its result verified: a solution whose natural-map residual exceeds accuracy x max|b| is
+// never returned. Lemke's tableau tolerances are absolute (entries below 1 are compared with 1e3 eps), so
+// on a W far from unit scale - nodal compliances spanning ~N^3 on a planar rod, a Delassus matrix in the
+// units of a massive rod (1e-12) - it can end (z0 leaving the basis) on an inaccurate "solution", or on a
+// ray or the pivot limit. Then Lemke runs again on the Jacobi-scaled problem (D W D, D b), D = diag(W)^-1/2
+// (unit diagonal; zero rows keep D = 1), lambda = D mu, and `rescaled` (if given) is incremented. W itself
+// goes first: it leaves the zero-force pairs of a degenerate contact exactly non-basic, where the scaled
+// problem may return them basic at round-off. PGS is invariant under the scaling (its update is
+// lambda_i - w_i / W_ii) and runs once. Residuals are reported in the units of W. Inaccurate after both:
+// SolverError naming the method, the pivots and the residual.
+LcpSolution solve_lcp_verified(const MatX& W, const VecX& b, LcpMethod method, const LcpSettings& settings,
+                               double accuracy, std::size_t* rescaled = nullptr);
+
 }  // namespace rodvv::solvers::contact
