@@ -39,6 +39,7 @@
 
 #include "rodvv/solvers/superhelix/clothoid_dynamics.hpp"
 #include "rodvv/solvers/superhelix/clothoid_statics.hpp"
+#include "rodvv/solvers/superhelix/contact_dynamics.hpp"
 #include "rodvv/solvers/superhelix/dynamics.hpp"
 #include "rodvv/solvers/superhelix/frictional_statics.hpp"
 #include "rodvv/solvers/superhelix/inverse_contact.hpp"
@@ -287,6 +288,38 @@ void BM_FrictionalDrawOnSlope(benchmark::State& bench) {
   bench.counters["iterations"] = static_cast<double>(iterations);
 }
 
+// One dynamics step of a rod lying on a plane (every Gauss point a contact, the frictionless rest of the
+// slope above), by the dense step's QP (contact_dynamics.hpp): assembly O(N^3), the Delassus matrix of m
+// contacts O(N^2 m), Lemke on it; with four Gauss points per element the compliance makes the redundant
+// contacts solvable. Compare with BM_StepDense at the same N.
+void BM_StepOnPlane(benchmark::State& bench) {
+  const double alpha = 20.0 * 3.141592653589793 / 180.0;
+  const rodvv::Vec3 normal(std::sin(alpha), 0.0, std::cos(alpha)), down(std::cos(alpha), 0.0, -std::sin(alpha));
+  sh::RodModel model;
+  model.length = 1.3;
+  model.elements = static_cast<std::size_t>(bench.range(0));
+  model.gauss_points = static_cast<std::size_t>(bench.range(1));
+  model.stiffness = rodvv::Vec3(0.9, 2.1, 1.4);
+  model.line_density = 0.7;
+  model.gravity = rodvv::Vec3(0.0, 0.0, -7.3);
+  model.rayleigh_stiffness = 0.05;
+  model.root_frame << down, normal.cross(down), normal;
+  const sh::RigidObstacle plane{sh::RigidObstacle::Shape::Plane, rodvv::Vec3::Zero(), normal, 0.0, 0.0};
+  const rodvv::VecX straight = rodvv::VecX::Zero(3 * static_cast<Eigen::Index>(model.elements));
+  const auto rest = sh::solve_frictional_increment(model, {plane}, sh::frictional_start(model, straight));
+  const sh::DynamicState state{rest.q, rodvv::VecX::Zero(rest.q.size()), 0.0};
+  std::size_t contacts = 0, pivots = 0;
+  for (auto _ : bench) {
+    const auto next = sh::step_with_obstacles(model, state, 1e-2, {plane});
+    benchmark::DoNotOptimize(next.state.q.data());
+    contacts = next.contacts.size();
+    pivots = next.lcp_iterations;
+  }
+  bench.SetComplexityN(bench.range(0));
+  bench.counters["contacts"] = static_cast<double>(contacts);
+  bench.counters["pivots"] = static_cast<double>(pivots);
+}
+
 BENCHMARK(BM_StepRecursive)->RangeMultiplier(2)->Range(16, 1024)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
 BENCHMARK(BM_StepDense)->RangeMultiplier(2)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
 BENCHMARK(BM_StepRecursiveTranslationalOnly)->RangeMultiplier(4)->Range(16, 1024)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity(benchmark::oN);
@@ -300,6 +333,7 @@ BENCHMARK(BM_JacobianCentralDifference)->RangeMultiplier(4)->Range(16, 256)->Arg
 BENCHMARK(BM_SelfContacts)->RangeMultiplier(2)->Range(64, 1024)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_SelfContactsAllPairs)->RangeMultiplier(2)->Range(64, 1024)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_InverseStatics)->RangeMultiplier(4)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
+BENCHMARK(BM_StepOnPlane)->ArgsProduct({{8, 16, 32, 64}, {1, 4}})->ArgNames({"N", "gauss"})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FrictionalDrawOnSlope)->RangeMultiplier(2)->Range(8, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_InverseHairOnSphere)->RangeMultiplier(10)->Range(10, 1000)->ArgName("strands")->Unit(benchmark::kMillisecond)->Complexity(benchmark::oN);
 
