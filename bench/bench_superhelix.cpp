@@ -261,21 +261,39 @@ void BM_InverseHairOnSphere(benchmark::State& bench) {
   bench.counters["mean_sweeps"] = static_cast<double>(sweeps) / static_cast<double>(strands);
 }
 
-void BM_FrictionalDrawOnSlope(benchmark::State& bench) {
+// A heavy rod (N elements) lying down the fall line of a plane tilted by 20 degrees, clamped at its upper end,
+// and its frictionless rest there.
+struct RodOnSlope {
+  sh::RodModel model;
+  sh::RigidObstacle slope;
+  rodvv::Vec3 down;
+  sh::FrictionalStaticResult rest;
+};
+
+RodOnSlope rod_on_slope(std::size_t elements, std::size_t gauss_points) {
   const double alpha = 20.0 * 3.141592653589793 / 180.0;
   const rodvv::Vec3 normal(std::sin(alpha), 0.0, std::cos(alpha)), down(std::cos(alpha), 0.0, -std::sin(alpha));
-  sh::RodModel model;
-  model.length = 1.3;
-  model.elements = static_cast<std::size_t>(bench.range(0));
-  model.gauss_points = 1;
-  model.stiffness = rodvv::Vec3(0.9, 2.1, 1.4);
-  model.line_density = 0.7;
-  model.gravity = rodvv::Vec3(0.0, 0.0, -7.3);
-  model.root_frame << down, normal.cross(down), normal;
-  const sh::RigidObstacle slope{sh::RigidObstacle::Shape::Plane, rodvv::Vec3::Zero(), normal, 0.0, 0.0};
-  const rodvv::VecX straight = rodvv::VecX::Zero(3 * static_cast<Eigen::Index>(model.elements));
-  const auto rest = sh::solve_frictional_increment(model, {slope}, sh::frictional_start(model, straight));
-  sh::RigidObstacle rough = slope;
+  RodOnSlope r;
+  r.model.length = 1.3;
+  r.model.elements = elements;
+  r.model.gauss_points = gauss_points;
+  r.model.stiffness = rodvv::Vec3(0.9, 2.1, 1.4);
+  r.model.line_density = 0.7;
+  r.model.gravity = rodvv::Vec3(0.0, 0.0, -7.3);
+  r.model.root_frame << down, normal.cross(down), normal;
+  r.slope = {sh::RigidObstacle::Shape::Plane, rodvv::Vec3::Zero(), normal, 0.0, 0.0};
+  r.down = down;
+  const rodvv::VecX straight = rodvv::VecX::Zero(3 * static_cast<Eigen::Index>(elements));
+  r.rest = sh::solve_frictional_increment(r.model, {r.slope}, sh::frictional_start(r.model, straight));
+  return r;
+}
+
+void BM_FrictionalDrawOnSlope(benchmark::State& bench) {
+  const RodOnSlope on_slope = rod_on_slope(static_cast<std::size_t>(bench.range(0)), 1);
+  sh::RodModel model = on_slope.model;
+  const rodvv::Vec3 down = on_slope.down;
+  const auto& rest = on_slope.rest;
+  sh::RigidObstacle rough = on_slope.slope;
   rough.mu = 0.35;
   model.root_position -= 0.01 * down;
   std::size_t iterations = 0;
@@ -293,21 +311,12 @@ void BM_FrictionalDrawOnSlope(benchmark::State& bench) {
 // contacts O(N^2 m), Lemke on it; with four Gauss points per element the compliance makes the redundant
 // contacts solvable. Compare with BM_StepDense at the same N.
 void BM_StepOnPlane(benchmark::State& bench) {
-  const double alpha = 20.0 * 3.141592653589793 / 180.0;
-  const rodvv::Vec3 normal(std::sin(alpha), 0.0, std::cos(alpha)), down(std::cos(alpha), 0.0, -std::sin(alpha));
-  sh::RodModel model;
-  model.length = 1.3;
-  model.elements = static_cast<std::size_t>(bench.range(0));
-  model.gauss_points = static_cast<std::size_t>(bench.range(1));
-  model.stiffness = rodvv::Vec3(0.9, 2.1, 1.4);
-  model.line_density = 0.7;
-  model.gravity = rodvv::Vec3(0.0, 0.0, -7.3);
+  const RodOnSlope on_slope =
+      rod_on_slope(static_cast<std::size_t>(bench.range(0)), static_cast<std::size_t>(bench.range(1)));
+  sh::RodModel model = on_slope.model;
   model.rayleigh_stiffness = 0.05;
-  model.root_frame << down, normal.cross(down), normal;
-  const sh::RigidObstacle plane{sh::RigidObstacle::Shape::Plane, rodvv::Vec3::Zero(), normal, 0.0, 0.0};
-  const rodvv::VecX straight = rodvv::VecX::Zero(3 * static_cast<Eigen::Index>(model.elements));
-  const auto rest = sh::solve_frictional_increment(model, {plane}, sh::frictional_start(model, straight));
-  const sh::DynamicState state{rest.q, rodvv::VecX::Zero(rest.q.size()), 0.0};
+  const sh::RigidObstacle& plane = on_slope.slope;
+  const sh::DynamicState state{on_slope.rest.q, rodvv::VecX::Zero(on_slope.rest.q.size()), 0.0};
   std::size_t contacts = 0, pivots = 0;
   for (auto _ : bench) {
     const auto next = sh::step_with_obstacles(model, state, 1e-2, {plane});
