@@ -12,10 +12,12 @@
 // w (L - 2 l / 3). Its error is relative O((delta / l)^2) (the slope squared), 1e-6 at the defaults, kept
 // below the discretisation's by the window delta / l <= 2e-3.
 // Metrics: the loads' moment about the clamp and the floor's reaction (gravity of the Gauss points, contact
-// impulses / h), the lifted shape against y(x) in units of delta, the touchdown against the bracket the Gauss
-// points give (the last point off the floor and the first on it), and - at the same N - the settled state
+// impulses / h), the lifted shape against y(x) in units of delta, and - at the same N - the settled state
 // against the quasi-static frictionless solver (frictional_statics.hpp, mu = 0: Newton on (q, r) with a
-// primal-dual active set), which solves the same discrete problem by another algorithm.
+// primal-dual active set), which solves the same discrete problem by another algorithm. Reported: the largest
+// penetration over the steps, and (diagnostic) how far l lies outside the bracket the Gauss points give (the
+// last one off the floor, the first on it), in element lengths: 0.5 at every default level, the discrete
+// touchdown half an element before the continuum's.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -46,9 +48,14 @@ TouchdownReference reference(const Parameters& p) {
   return {parameter_value(p, "L"), parameter_value(p, "EI"), parameter_value(p, "w"), parameter_value(p, "delta")};
 }
 
-// The clamp at (0, 0, delta) in a frame whose tangent n0 is horizontal and n1 horizontal (bending about n1
-// moves the rod in the vertical plane of n0): the floor is z = 0 in world coordinates, the rod runs along a
-// horizontal direction in no coordinate plane.
+double lowest_frequency(const sh::RodModel& m) {  // of the cantilever: 1.8751^2 sqrt(EI1 / (rho S L^4))
+  return 1.8751 * 1.8751 * std::sqrt(m.stiffness(1) / (m.line_density * std::pow(m.length, 4)));
+}
+
+// The clamp at height delta over the floor z = 0, in a frame whose tangent n0 and n1 are horizontal (bending
+// about n1 moves the rod in the vertical plane of n0), the rod heading along no coordinate axis. One Gauss
+// point per element: a lying element then touches the floor at one point, so the contacts are not redundant
+// (contact_dynamics.hpp: with four, W is singular and Lemke's pivots grow ~20-fold).
 sh::RodModel model(const Parameters& p, std::size_t elements) {
   const TouchdownReference t = reference(p);
   const double rho_S = parameter_value(p, "rhoS");
@@ -67,14 +74,8 @@ sh::RodModel model(const Parameters& p, std::size_t elements) {
   m.root_frame.col(0) = along;
   m.root_frame.col(1) = side;
   m.root_frame.col(2) = along.cross(side);  // up
-  // Damping: a tenth of critical on the lowest cantilever mode omega_1 = 1.8751^2 sqrt(EI / (rho S L^4)).
-  const double omega_1 = 1.8751 * 1.8751 * std::sqrt(t.EI / (rho_S * t.L * t.L * t.L * t.L));
-  m.rayleigh_stiffness = 0.2 / omega_1;
+  m.rayleigh_stiffness = 0.2 / lowest_frequency(m);  // a tenth of critical damping on the lowest mode
   return m;
-}
-
-double lowest_frequency(const sh::RodModel& m) {
-  return 1.8751 * 1.8751 * std::sqrt(m.stiffness(1) / (m.line_density * std::pow(m.length, 4)));
 }
 
 sh::RigidObstacle floor_plane() { return {sh::RigidObstacle::Shape::Plane, Vec3::Zero(), Vec3::UnitZ(), 0.0, 0.0}; }
@@ -99,7 +100,7 @@ LevelOutput touchdown_level(const Parameters& p, double level, const TouchdownRe
   const sh::RodModel m = model(p, n);
   const std::vector<sh::RigidObstacle> floor{floor_plane()};
   // Steps of a fifth of the lowest period / 2 pi; at rest when a step changes q by less than 1e-12 of its
-  // scale (q in units of 1 / L), measured to take 40 - 120 steps.
+  // scale (q in units of 1 / L), measured to take 30 - 32 steps at N = 8 .. 128.
   const double h = 0.2 / lowest_frequency(m);
   constexpr std::size_t kMaxSteps = 20000;
   const auto dofs = static_cast<Eigen::Index>(sh::dof_count(m));
