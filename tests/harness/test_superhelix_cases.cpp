@@ -88,14 +88,14 @@ TEST(SuperHelixGatesHaveTeeth, ManufacturedCaseSeesAStiffnessAndAStationOffset) 
   }
 }
 
-// superhelix/touchdown's teeth: the settled rod measured against the reference of a stiffness 1 % off (l and the
-// loads scale as EI^(1/4), the shape as well) fails the moment, reaction and shape bounds, and the comparison
+// superhelix/touchdown's teeth: the settled rod measured against the reference of a stiffness 1 % off (the moment
+// scales as EI^(1/2), l and the clamp's force as EI^(1/4)) fails the moment, reaction and shape bounds, and the comparison
 // with the quasi-static solver stays green (the solver is not changed).
 TEST(SuperHelixGatesHaveTeeth, TouchdownSeesAStiffnessOnePercentOff) {
   Case wrong = named("superhelix/touchdown");
   wrong.run_level = [](const Parameters& p, double level) {
-    superhelix_cases::TouchdownReference off{parameter_value(p, "L"), 1.01 * parameter_value(p, "EI"),
-                                             parameter_value(p, "w"), parameter_value(p, "delta")};
+    const rodvv::references::HeavyTouchdown off{1.01 * parameter_value(p, "EI"), parameter_value(p, "w"),
+                                                parameter_value(p, "delta")};
     return superhelix_cases::touchdown_level(p, level, off);
   };
   const auto result = run_at_default_levels(wrong);

@@ -5,12 +5,11 @@
 // The rod (EI1 = EI in the vertical plane, EI2 = 1.8 EI, GJ = 0.6 EI, weight w per length) is clamped
 // horizontally at height delta above the floor, released straight at rest, falls, lands and comes to rest under
 // Rayleigh damping. At rest it is a heavy cantilever lifted off a flat floor over a length l and lying on it
-// beyond. Small-deflection reference (EI y'''' = -w on the lifted part; at the touchdown y = y' = 0 and y'' = 0,
-// the moment of the flat part; at the clamp y = delta, y' = 0):
-//   y(xi) = w l xi^3 / (18 EI) - w xi^4 / (24 EI),  xi = l - x,   l = (72 EI delta / w)^(1/4),
-// a point reaction w l / 3 at the touchdown, the clamp's moment w l^2 / 6 and the floor's total reaction
-// w (L - 2 l / 3). Its error is relative O((delta / l)^2) (the slope squared), 1e-6 at the defaults, kept
-// below the discretisation's by the window delta / l <= 2e-3.
+// beyond (references/heavy_touchdown.hpp): the clamp's moment sqrt(2 EI w delta), exact at any deflection (the
+// Noether invariant H = 0 from the touchdown to the clamp); in the small-deflection limit l = (72 EI delta /
+// w)^(1/4), the shape y(x), the clamp's vertical force 2 w l / 3 and so the floor's total reaction
+// w (L - 2 l / 3), whose relative error (3/7) (delta / l)^2 is 4e-7 at the defaults, kept below the
+// discretisation's by the window delta / l <= 2e-3.
 // Metrics: the loads' moment about the clamp and the floor's reaction (gravity of the Gauss points, contact
 // impulses / h), the lifted shape against y(x) in units of delta, and - at the same N - the settled state
 // against the quasi-static frictionless solver (frictional_statics.hpp, mu = 0: Newton on (q, r) with a
@@ -44,8 +43,8 @@ namespace {
 namespace sh = solvers::superhelix;
 using namespace cases;
 
-TouchdownReference reference(const Parameters& p) {
-  return {parameter_value(p, "L"), parameter_value(p, "EI"), parameter_value(p, "w"), parameter_value(p, "delta")};
+references::HeavyTouchdown reference(const Parameters& p) {
+  return {parameter_value(p, "EI"), parameter_value(p, "w"), parameter_value(p, "delta")};
 }
 
 double lowest_frequency(const sh::RodModel& m) {  // of the cantilever: 1.8751^2 sqrt(EI1 / (rho S L^4))
@@ -57,19 +56,19 @@ double lowest_frequency(const sh::RodModel& m) {  // of the cantilever: 1.8751^2
 // point per element: a lying element then touches the floor at one point, so the contacts are not redundant
 // (contact_dynamics.hpp: with four, W is singular and Lemke's pivots grow ~20-fold).
 sh::RodModel model(const Parameters& p, std::size_t elements) {
-  const TouchdownReference t = reference(p);
-  const double rho_S = parameter_value(p, "rhoS");
+  const double L = parameter_value(p, "L"), EI = parameter_value(p, "EI"), w = parameter_value(p, "w");
+  const double delta = parameter_value(p, "delta"), rho_S = parameter_value(p, "rhoS");
   const double turn = 0.6;  // the rod's heading in the floor plane
   sh::RodModel m;
-  m.length = t.L;
+  m.length = L;
   m.elements = elements;
-  m.stiffness = Vec3(0.6 * t.EI, t.EI, 1.8 * t.EI);
+  m.stiffness = Vec3(0.6 * EI, EI, 1.8 * EI);
   m.gauss_points = 1;
   m.line_density = rho_S;
-  const double r = 0.01 * t.L;  // a solid round section of radius L / 100: rho I = rho S r^2 (1/2, 1/4, 1/4)
+  const double r = 0.01 * L;  // a solid round section of radius L / 100: rho I = rho S r^2 (1/2, 1/4, 1/4)
   m.rotational_inertia = rho_S * r * r * Vec3(0.5, 0.25, 0.25);
-  m.gravity = Vec3(0.0, 0.0, -t.w / rho_S);
-  m.root_position = Vec3(0.3 * t.L, -0.2 * t.L, t.delta);
+  m.gravity = Vec3(0.0, 0.0, -w / rho_S);
+  m.root_position = Vec3(0.3 * L, -0.2 * L, delta);
   const Vec3 along(std::cos(turn), std::sin(turn), 0.0), side(-std::sin(turn), std::cos(turn), 0.0);
   m.root_frame.col(0) = along;
   m.root_frame.col(1) = side;
@@ -84,19 +83,9 @@ LevelOutput run(const Parameters& p, double level) { return touchdown_level(p, l
 
 }  // namespace
 
-double TouchdownReference::lifted() const { return std::pow(72.0 * EI * delta / w, 0.25); }
-
-double TouchdownReference::height(double x) const {
-  const double l = lifted(), xi = l - x;
-  return xi <= 0.0 ? 0.0 : w * l * xi * xi * xi / (18.0 * EI) - w * xi * xi * xi * xi / (24.0 * EI);
-}
-
-double TouchdownReference::clamp_moment() const { return w * lifted() * lifted() / 6.0; }
-
-double TouchdownReference::floor_reaction() const { return w * (L - 2.0 * lifted() / 3.0); }
-
-LevelOutput touchdown_level(const Parameters& p, double level, const TouchdownReference& t) {
+LevelOutput touchdown_level(const Parameters& p, double level, const references::HeavyTouchdown& t) {
   const std::size_t n = element_count(level);
+  const double L = parameter_value(p, "L");
   const sh::RodModel m = model(p, n);
   const std::vector<sh::RigidObstacle> floor{floor_plane()};
   // Steps of a fifth of the lowest period / 2 pi; at rest when a step changes q by less than 1e-12 of its
@@ -112,12 +101,12 @@ LevelOutput touchdown_level(const Parameters& p, double level, const TouchdownRe
   double max_penetration = 0.0;
   for (; steps < kMaxSteps; ++steps) {
     step = sh::step_with_obstacles(m, state, h, floor);
-    change = (step.state.q - state.q).lpNorm<Eigen::Infinity>() * t.L;
+    change = (step.state.q - state.q).lpNorm<Eigen::Infinity>() * L;
     state = step.state;
     max_penetration = std::max(max_penetration, step.penetration);
     times.push_back(state.time);
     heights.push_back(sh::Kinematics(m, state.q).tip_position().z() / t.delta);
-    if (change <= 1e-12 * std::max(1.0, state.q.lpNorm<Eigen::Infinity>() * t.L)) break;
+    if (change <= 1e-12 * std::max(1.0, state.q.lpNorm<Eigen::Infinity>() * L)) break;
   }
   if (steps == kMaxSteps)
     throw SolverError("superhelix semi-implicit Euler step with velocity-level contact",
@@ -130,7 +119,7 @@ LevelOutput touchdown_level(const Parameters& p, double level, const TouchdownRe
   std::vector<Vec3> contact_force(points.size(), Vec3::Zero());
   for (const auto& c : step.contacts) contact_force[c.point] += c.impulse / h * c.normal;
   const Vec3 lateral = m.root_frame.col(1);
-  double moment = 0.0, reaction = 0.0, shape = 0.0, last_open = 0.0, first_closed = t.L;
+  double moment = 0.0, reaction = 0.0, shape = 0.0, last_open = 0.0, first_closed = L;
   bool touched = false;
   const double ell = m.length / double(n);
   for (std::size_t g = 0; g < points.size(); ++g) {
@@ -139,7 +128,7 @@ LevelOutput touchdown_level(const Parameters& p, double level, const TouchdownRe
     reaction += contact_force[g].z();
     const double s = double(points[g].element) * ell + points[g].sigma;
     const double x = (points[g].position - m.root_position).dot(m.root_frame.col(0));
-    shape = std::max(shape, std::abs(points[g].position.z() - t.height(x)) / t.delta);
+    shape = std::max(shape, std::abs(points[g].position.z() - references::touchdown_height(t, x)) / t.delta);
     if (contact_force[g].z() > 0.0) {
       if (!touched) first_closed = s;
       touched = true;
@@ -147,12 +136,12 @@ LevelOutput touchdown_level(const Parameters& p, double level, const TouchdownRe
       last_open = s;
     }
   }
-  const double l = t.lifted();
+  const double l = references::touchdown_lifted_span(t);
   // Gravity's moment about the clamp is + w x per length about the lateral axis n1 (the rod points along n0,
-  // gravity down): the loads' moment is w L^2 / 2 - (the floor's) = w l^2 / 6.
+  // gravity down), the floor's the opposite: their sum is the moment the clamp holds.
   LevelOutput output;
-  output.metrics["clamp_moment"] = error_sample(moment, t.clamp_moment());
-  output.metrics["floor_reaction"] = error_sample(reaction, t.floor_reaction());
+  output.metrics["clamp_moment"] = error_sample(moment, references::touchdown_clamp_moment(t));
+  output.metrics["floor_reaction"] = error_sample(reaction, t.w * L - references::touchdown_clamp_force(t));
   output.metrics["lifted_shape"] = value_sample(shape, 1.0);
   output.metrics["touchdown_outside_bracket"] = diagnostic(std::max({0.0, last_open - l, l - first_closed}) / ell);
 
@@ -161,7 +150,7 @@ LevelOutput touchdown_level(const Parameters& p, double level, const TouchdownRe
   options.tolerance = 1e-11;
   const auto statics = sh::solve_frictional_increment(m, floor, sh::frictional_start(m, VecX::Zero(dofs)), options);
   output.metrics["rest_vs_statics"] = value_sample(
-      (state.q - statics.q).lpNorm<Eigen::Infinity>() / std::max(statics.q.lpNorm<Eigen::Infinity>(), 1.0 / t.L), 1.0);
+      (state.q - statics.q).lpNorm<Eigen::Infinity>() / std::max(statics.q.lpNorm<Eigen::Infinity>(), 1.0 / L), 1.0);
   output.metrics["penetration"] = value_sample(max_penetration / t.delta, 1.0);
   output.metrics["lcp_residual"] = diagnostic(step.lcp_residual);
   output.metrics["steps_to_rest"] = diagnostic(double(steps + 1));
@@ -179,15 +168,15 @@ Window touchdown_window() {
   return {"l / L in [0.25, 0.9] and delta / l <= 2e-3, l = (72 EI delta / w)^(1/4) (the lifted length the levels "
           "resolve; the small-deflection reference's (delta / l)^2)",
           [](const Parameters& p) {
-            const TouchdownReference t = reference(p);
-            const double l = t.lifted();
-            if (!(l >= 0.25 * t.L && l <= 0.9 * t.L))
+            const references::HeavyTouchdown t = reference(p);
+            const double L = parameter_value(p, "L"), l = references::touchdown_lifted_span(t);
+            if (!(l >= 0.25 * L && l <= 0.9 * L))
               throw InputError("delta", fmt::format("invalid parameter 'delta' = {}: the lifted length l = (72 EI delta / "
                                                     "w)^(1/4) = {} (EI = {}, w = {}) must be in [0.25, 0.9] L = [{}, {}] "
                                                     "(L = {}: the rod must lift off and land)",
                                                     format_value(t.delta), format_value(l), format_value(t.EI),
-                                                    format_value(t.w), format_value(0.25 * t.L), format_value(0.9 * t.L),
-                                                    format_value(t.L)));
+                                                    format_value(t.w), format_value(0.25 * L), format_value(0.9 * L),
+                                                    format_value(L)));
             if (!(t.delta <= 2e-3 * l))
               throw InputError("delta", fmt::format("invalid parameter 'delta' = {}: delta / l = {} must be <= 2e-3 "
                                                     "(the small-deflection reference's error (delta / l)^2)",
@@ -219,7 +208,7 @@ void add_touchdown(Registry& registry) {
       upper_bound_gate("penetration", 2e-8, GateScope::AllLevels,
                        "linearised gaps and the contact compliance: measured <= 1.9e-9 delta over N = 8 .. 128, x 10")};
   std::vector<MetricSpec> metrics{
-      error_metric("clamp_moment", "force length", "moment of gravity and the floor about the clamp vs w l^2 / 6", 2.0),
+      error_metric("clamp_moment", "force length", "moment of gravity and the floor about the clamp vs sqrt(2 EI w delta)", 2.0),
       error_metric("floor_reaction", "force", "total floor reaction vs w (L - 2 l / 3)", 2.0),
       invariant_metric("lifted_shape", "max |z(x) - y(x)| / delta over the Gauss points", 2.0),
       diagnostic_metric("touchdown_outside_bracket",
@@ -234,9 +223,9 @@ void add_touchdown(Registry& registry) {
        "Super-Helix cantilever, EI1 = EI (vertical plane), EI2 = 1.8 EI, GJ = 0.6 EI, weight w per length, clamped "
        "horizontally at height delta over a frictionless floor; released straight at rest, it falls, lands and "
        "settles under Rayleigh damping (a tenth of critical on the lowest mode).",
-       "Small-deflection heavy cantilever lifted off a floor: l = (72 EI delta / w)^(1/4), clamp moment w l^2 / 6, "
-       "floor reaction w (L - 2 l / 3), y(x) (relative error O((delta / l)^2)); the quasi-static frictionless "
-       "solver at the same N",
+       "Clamp moment sqrt(2 EI w delta), exact (Noether's H = 0 along the lifted part); small-deflection l = (72 EI "
+       "delta / w)^(1/4), floor reaction w (L - 2 l / 3) and y(x) (relative error (3/7) (delta / l)^2; "
+       "references/heavy_touchdown.hpp, against mpmath shooting); the quasi-static frictionless solver at the same N",
        "Timoshenko & Gere (beam on a rigid foundation); Levin et al. 2011 (velocity-level contact QP); Bertails "
        "et al. 2006",
        "Super-Helix semi-implicit Euler, dense path, with frictionless velocity-level contact at the Gauss points "
