@@ -73,7 +73,10 @@ ContactStepResult step_with_obstacles(const RodModel& model, const DynamicState&
   } else {
     MatX J(Eigen::Index(rows.size()), system.rhs.size());
     VecX c(Eigen::Index(rows.size()));
-    for (std::size_t i = 0; i < rows.size(); ++i) J.row(Eigen::Index(i)) = rows[i].transpose(), c(Eigen::Index(i)) = bounds[i];
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      J.row(Eigen::Index(i)) = rows[i].transpose();
+      c(Eigen::Index(i)) = bounds[i];
+    }
     // A = M_n + (h^2 + h gamma) K is symmetric positive definite: K > 0 (validate) and h > 0.
     const auto qp = contact::solve_velocity_qp(system.matrix, -system.rhs, J, c, options.method, options.lcp,
                                                options.compliance);

@@ -156,7 +156,8 @@ VecX elastic_rhs(const RodModel& model, const DynamicState& state, double h, Vec
 
 }  // namespace
 
-detail::DenseStepSystem detail::dense_step_system(const RodModel& model_in, const DynamicState& state, double h, const RootState& root) {
+detail::DenseStepSystem detail::dense_step_system(const RodModel& model_in, const DynamicState& state, double h,
+                                                  const RootState& root) {
   const RodModel model = model_with_root(model_in, root);
   const Kinematics kinematics(model, state.q);
   const bool rotation = has_rotational_inertia(model);

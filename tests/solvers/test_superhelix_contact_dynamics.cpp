@@ -80,7 +80,10 @@ TEST(SuperHelixContactDynamics, WithoutCandidatesItIsTheDenseStep) {
   Floor f = heavy_rod_over_floor(6);
   f.plane.point = Vec3(0.0, 0.0, -10.0);
   sh::DynamicState state{at_rest(f.model), at_rest(f.model), 0.4};
-  for (Eigen::Index i = 0; i < state.q.size(); ++i) state.q(i) = 0.1 * std::sin(1.3 * double(i)), state.qdot(i) = 0.2 * std::cos(0.7 * double(i));
+  for (Eigen::Index i = 0; i < state.q.size(); ++i) {
+    state.q(i) = 0.1 * std::sin(1.3 * double(i));
+    state.qdot(i) = 0.2 * std::cos(0.7 * double(i));
+  }
   const auto with = sh::step_with_obstacles(f.model, state, 1e-2, {f.plane});
   const auto dense = sh::step(f.model, state, 1e-2, sh::DynamicsPath::Dense);
   EXPECT_TRUE(with.contacts.empty());
@@ -145,7 +148,8 @@ TEST(SuperHelixContactDynamics, LandingStepIsComplementaryAndBothLcpSolversAgree
     }
   }
   EXPECT_GT(active, 0u);
-  EXPECT_LT((lemke.state.qdot - pgs.state.qdot).lpNorm<Eigen::Infinity>(), 1e-9 * lemke.state.qdot.lpNorm<Eigen::Infinity>());
+  EXPECT_LT((lemke.state.qdot - pgs.state.qdot).lpNorm<Eigen::Infinity>(),
+            1e-9 * lemke.state.qdot.lpNorm<Eigen::Infinity>());
 }
 
 TEST(SuperHelixContactDynamics, RefusesBadInputByName) {

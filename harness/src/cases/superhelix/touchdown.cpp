@@ -171,9 +171,9 @@ Window touchdown_window() {
             const references::HeavyTouchdown t = reference(p);
             const double L = parameter_value(p, "L"), l = references::touchdown_lifted_span(t);
             if (!(l >= 0.25 * L && l <= 0.9 * L))
-              throw InputError("delta", fmt::format("invalid parameter 'delta' = {}: the lifted length l = (72 EI delta / "
-                                                    "w)^(1/4) = {} (EI = {}, w = {}) must be in [0.25, 0.9] L = [{}, {}] "
-                                                    "(L = {}: the rod must lift off and land)",
+              throw InputError("delta", fmt::format("invalid parameter 'delta' = {}: the lifted length l = (72 EI "
+                                                    "delta / w)^(1/4) = {} (EI = {}, w = {}) must be in [0.25, 0.9] "
+                                                    "L = [{}, {}] (L = {}: the rod must lift off and land)",
                                                     format_value(t.delta), format_value(l), format_value(t.EI),
                                                     format_value(t.w), format_value(0.25 * L), format_value(0.9 * L),
                                                     format_value(L)));
@@ -208,7 +208,8 @@ void add_touchdown(Registry& registry) {
       upper_bound_gate("penetration", 2e-8, GateScope::AllLevels,
                        "linearised gaps and the contact compliance: measured <= 1.9e-9 delta over N = 8 .. 128, x 10")};
   std::vector<MetricSpec> metrics{
-      error_metric("clamp_moment", "force length", "moment of gravity and the floor about the clamp vs sqrt(2 EI w delta)", 2.0),
+      error_metric("clamp_moment", "force length",
+                   "moment of gravity and the floor about the clamp vs sqrt(2 EI w delta)", 2.0),
       error_metric("floor_reaction", "force", "total floor reaction vs w (L - 2 l / 3)", 2.0),
       invariant_metric("lifted_shape", "max |z(x) - y(x)| / delta over the Gauss points", 2.0),
       diagnostic_metric("touchdown_outside_bracket",
@@ -231,7 +232,8 @@ void add_touchdown(Registry& registry) {
        "Super-Helix semi-implicit Euler, dense path, with frictionless velocity-level contact at the Gauss points "
        "(convex QP in the metric M + D, dual LCP by Lemke)"},
       {make_parameter("L", 1.6, 0.0, 1e6, true, false, "length", "rod length"),
-       make_parameter("EI", 0.9, 0.0, 1e12, true, false, "force length^2", "bending stiffness EI1 in the vertical plane"),
+       make_parameter("EI", 0.9, 0.0, 1e12, true, false, "force length^2",
+                      "bending stiffness EI1 in the vertical plane"),
        make_parameter("w", 0.0648, 0.0, 1e12, true, false, "force / length", "weight per unit length rho S g"),
        make_parameter("rhoS", 0.4, 0.0, 1e12, true, false, "mass / length", "line density (sets the time scale)"),
        make_parameter("delta", 1e-3, 0.0, 1e6, true, false, "length", "height of the clamp above the floor")},

@@ -24,9 +24,9 @@ struct HeavyTouchdown {
   double delta = 1.0;  // height of the clamp above the floor, > 0
 };
 
-double touchdown_clamp_moment(const HeavyTouchdown& rod);           // exact: sqrt(2 EI w delta)
-double touchdown_lifted_span(const HeavyTouchdown& rod);            // small deflection: l
-double touchdown_clamp_force(const HeavyTouchdown& rod);            // small deflection: 2 w l / 3
-double touchdown_height(const HeavyTouchdown& rod, double x);       // small deflection: y at x from the clamp; 0 for x >= l
+double touchdown_clamp_moment(const HeavyTouchdown& rod);      // exact: sqrt(2 EI w delta)
+double touchdown_lifted_span(const HeavyTouchdown& rod);       // small deflection: l
+double touchdown_clamp_force(const HeavyTouchdown& rod);       // small deflection: 2 w l / 3
+double touchdown_height(const HeavyTouchdown& rod, double x);  // small deflection: y(x), x from the clamp; 0 at x >= l
 
 }  // namespace rodvv::references
