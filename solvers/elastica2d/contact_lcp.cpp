@@ -103,7 +103,6 @@ Eigen::SparseMatrix<double> tangent(const DiscreteLagrangian& lag, const std::ve
 // factor >= 140 from both.
 constexpr double kLcpAccuracy = 1e-6;
 
-
 // The condensed LCP, with a verified result (contact::solve_lcp_verified: Lemke on W, then on the
 // Jacobi-scaled problem if inaccurate). Why the scaling is needed here: diag W spans the nodal
 // compliances, from ~h^3 / EI next to a support to ~L^3 / EI mid-span (a ratio ~N^3), and on a line
