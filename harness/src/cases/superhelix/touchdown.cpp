@@ -217,7 +217,7 @@ void add_touchdown(Registry& registry) {
       invariant_metric("rest_vs_statics", "|q_rest - q_statics|_inf / max(|q_statics|_inf, 1 / L), same N"),
       invariant_metric("penetration", "largest penetration over the steps / delta"),
       diagnostic_metric("lcp_residual", "natural-map residual of the last step's LCP"),
-      diagnostic_metric("steps_to_rest", "steps until a step changes q by < 1e-14 of its scale")};
+      diagnostic_metric("steps_to_rest", "steps until a step changes q by < 1e-12 of its scale")};
   Case c = make_case(
       "superhelix",
       {"superhelix/touchdown", "A heavy Super-Helix lands on a frictionless floor and settles (velocity-level contact)",
