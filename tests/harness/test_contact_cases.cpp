@@ -3,6 +3,7 @@
 // contact force that is off by the (point-contact) discretisation error x 4.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -37,14 +38,14 @@ TEST(ContactCases, AllTenAreRegistered) {
   EXPECT_EQ(rodvv::testing::case_names_of_family("elastica-contact").size(), 15u);
 }
 
-// The solver runs with the wall at 0.101 while the reference keeps 0.1: P moves by ~0.3, far above
-// the C h^2 bounds.
+// The solver runs with the wall 1 % further out while the reference keeps it: P moves by ~0.3 EI / L^2, far
+// above the C h^2 bounds.
 TEST(ContactGatesHaveTeeth, WrongWallGapFailsThePointContactCase) {
   Case wrong = named_case("elastica-contact/cavity-point/arcs");
   const auto original = wrong.run_level;
   wrong.run_level = [original](const Parameters& p, double level) {
     Parameters moved = p;
-    set_parameter(moved, "wall_gap", 0.101);
+    set_parameter(moved, "wall_gap", 1.01 * parameter_value(p, "wall_gap"));
     LevelOutput solver = original(moved, level);
     const LevelOutput truth = original(p, level);
     for (auto& [name, sample] : solver.metrics)
@@ -90,8 +91,8 @@ TEST(ContactGatesHaveTeeth, SoftWallAgainstTheHardWallValueFails) {
   EXPECT_FALSE(result.passed());
 }
 
-// The NewtonLcp variant with its wall 1e-6 further out (its references follow the wall, so only
-// the agreement gate can see it): P moves by ~3e-4 against the active-set P at wall_gap = 0.1,
+// The NewtonLcp variant with its wall 1e-6 L further out (its references follow the wall, so only
+// the agreement gate can see it): P moves by ~3e-4 EI / L^2 against the active-set P at wall_gap = 0.1 L,
 // far above the 7e-7 agreement bound.
 TEST(ContactGatesHaveTeeth, AMicronWallShiftFailsTheLcpAgreementGate) {
   Case wrong = named_case("elastica-contact/cavity-point/polygon-lcp");
@@ -99,7 +100,7 @@ TEST(ContactGatesHaveTeeth, AMicronWallShiftFailsTheLcpAgreementGate) {
   const auto active = named_case("elastica-contact/cavity-point/polygon").run_level;
   wrong.run_level = [lcp, active](const Parameters& p, double level) {
     Parameters moved = p;
-    set_parameter(moved, "wall_gap", 0.1 + 1e-6);
+    set_parameter(moved, "wall_gap", parameter_value(p, "wall_gap") + 1e-6 * parameter_value(p, "L"));
     LevelOutput out = lcp(moved, level);
     const double d = std::abs(out.metrics.at("P").computed - active(p, level).metrics.at("P").computed);
     out.metrics["P_vs_active_set"] = {d, 0.0, d};
@@ -133,10 +134,36 @@ TEST(ContactGatesHaveTeeth, AFlatOffItsWallAndAFirstOrderHDriftFailTheLineGates)
   }
 }
 
+// The cavity problem depends on shortening / L and wall_gap / L alone, and its metrics are reported in units
+// of EI / L^2, 1 / L and L: at (L, EI) = (3.4, 18.4) with the lengths scaled they are the defaults' (1.7, 2.3)
+// to the Newton tolerance (measured 2e-12 relative), so a missing power of L or EI in the solver's set-up or
+// the metrics' units shows; the soft wall's level b L / EI too.
+TEST(ContactCases, CavityMetricsDependOnTheDimensionlessGroupsAlone) {
+  for (const std::string name : {"elastica-contact/cavity-point/polygon", "elastica-contact/cavity-line/arcs",
+                                  "elastica-contact/cavity-point/arcs-ring", "elastica-contact/soft-wall"}) {
+    const Case& c = named_case(name);
+    Parameters scaled = c.info.parameters;
+    const double stretch = 2.0;
+    set_parameter(scaled, "L", stretch * parameter_value(scaled, "L"));
+    set_parameter(scaled, "EI", 8.0 * parameter_value(scaled, "EI"));
+    if (name != "elastica-contact/soft-wall")
+      for (const char* length : {"shortening", "wall_gap"})
+        set_parameter(scaled, length, stretch * parameter_value(scaled, length));
+    const double level = c.info.resolution.default_levels.front();
+    const LevelOutput at_defaults = c.run_level(c.info.parameters, level);
+    const LevelOutput at_scaled = c.run_level(scaled, level);
+    for (const auto& [metric, sample] : at_defaults.metrics) {
+      if (metric == "P_vs_walls" || metric == "penetration" || metric == "newton_iterations") continue;  // round-off
+      const double value = at_scaled.metrics.at(metric).computed;
+      EXPECT_NEAR(value, sample.computed, 1e-9 * std::max(1.0, std::abs(sample.computed))) << name << " " << metric;
+    }
+  }
+}
+
 TEST(ContactCases, ShorteningBeyondTheTabulatedBranchIsRejected) {
   const Case& c = named_case("elastica-contact/cavity-line/polygon");
   Parameters p = c.info.parameters;
-  set_parameter(p, "shortening", 0.095);
+  set_parameter(p, "shortening", 0.095 * parameter_value(p, "L"));
   try {
     c.check_parameters(p);
     ADD_FAILURE() << "no InputError";
