@@ -3,7 +3,9 @@
 // failing gates, and make a GoogleTest-safe name from a case name.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -64,6 +66,73 @@ inline void expect_results_free_of_units(const harness::Case& c,
       const double a = *sample.error, b = *at_other.levels[i].metrics.at(metric).error;
       EXPECT_NEAR(b, a, relative * a + absolute) << c.info.name << " " << metric << " at level " << i;
     }
+}
+
+// The factor on a value of `unit` (a parameter's unit text: "force length^2", "mass / length", "1/time^2", "rad",
+// "" ...) when the units of length, mass and time are changed so that a length is `length` times its old value,
+// a mass `mass` times and a time `time` times: force = mass length / time^2. Throws std::invalid_argument
+// naming an unknown unit word.
+inline double unit_factor(const std::string& unit, double length, double mass, double time) {
+  double factor = 1.0;
+  bool denominator = false;
+  std::string word;
+  const auto apply = [&](std::string token) {
+    if (token.empty()) return;
+    int power = 1;
+    if (const auto caret = token.find('^'); caret != std::string::npos) {
+      power = std::stoi(token.substr(caret + 1));
+      token = token.substr(0, caret);
+    }
+    double base = 1.0;
+    if (token == "length") base = length;
+    else if (token == "mass") base = mass;
+    else if (token == "time") base = time;
+    else if (token == "force") base = mass * length / (time * time);
+    else if (token != "1" && token != "rad" && token != "deg" && token != "degrees")
+      throw std::invalid_argument("unit_factor: unknown unit word '" + token + "' in '" + unit + "'");
+    factor *= std::pow(base, denominator ? -power : power);
+  };
+  for (char ch : unit) {
+    if (ch == ' ' || ch == '/') {
+      apply(word);
+      word.clear();
+      if (ch == '/') denominator = true;
+    } else {
+      word += ch;
+    }
+  }
+  apply(word);
+  return factor;
+}
+
+// The same physical problem in other units (every real parameter times its unit_factor; whole numbers such as N
+// are counts); the resolution (dt / tau, N, ...) is left as it is, so a case whose levels are dimensionless runs
+// the same discrete problem.
+inline harness::Parameters in_other_units(const harness::Parameters& parameters, double length, double mass,
+                                          double time) {
+  harness::Parameters other = parameters;
+  for (auto& p : other)
+    if (p.kind == harness::ParameterKind::Real) p.value *= unit_factor(p.unit, length, mass, time);
+  return other;
+}
+
+// A case posed in other units reports the same metrics: the metric values at its coarsest default level agree
+// within relative * max(|value|, floor) (floor: the size below which a value is round-off, e.g. 1e-10 for
+// metrics that are 0 in exact arithmetic); metrics in `round_off` (measured in eps) are not compared.
+inline void expect_metrics_free_of_units(const harness::Case& c, double length, double mass, double time,
+                                         double relative, double floor,
+                                         const std::vector<std::string>& round_off = {}) {
+  const harness::Parameters other = in_other_units(c.info.parameters, length, mass, time);
+  if (c.check_parameters) c.check_parameters(other);  // windows on dimensionless groups: the same verdict
+  const double level = c.info.resolution.default_levels.front();
+  const harness::LevelOutput at_default = c.run_level(c.info.parameters, level);
+  const harness::LevelOutput at_other = c.run_level(other, level);
+  ASSERT_FALSE(at_default.metrics.empty()) << c.info.name;
+  for (const auto& [metric, sample] : at_default.metrics) {
+    if (std::find(round_off.begin(), round_off.end(), metric) != round_off.end()) continue;
+    const double a = sample.computed, b = at_other.metrics.at(metric).computed;
+    EXPECT_NEAR(b, a, relative * std::max(std::abs(a), floor)) << c.info.name << " " << metric;
+  }
 }
 
 // "pendulum/libration-90/rk4" -> "pendulumXlibrationX90Xrk4" (GoogleTest names are alphanumeric).

@@ -171,9 +171,10 @@ TEST(OneStepMapOracle, SymplecticMapsPreserveArea) {
 TEST(OneStepMapOracle, MapsAreDistinctFarAboveTheGate) {
   for (StepMap a : kAllStepMaps)
     for (StepMap b : kAllStepMaps)
-      if (a != b)
+      if (a != b) {
         EXPECT_GT(distance(step_map(a, 0.05), step_map(b, 0.05)) / kEps, 32e4)
             << step_map_name(a) << " vs " << step_map_name(b);
+      }
 }
 
 // The production integrators are the variants their documentation names, and not the other variant of

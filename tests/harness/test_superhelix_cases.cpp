@@ -319,8 +319,8 @@ TEST(SuperHelixGatesHaveTeeth, EnergyDecayWithoutRotationalInertiaGainsEnergy) {
 
 TEST(SuperHelixGatesHaveTeeth, EnergyLossMagnitudeGateCatchesALargerErrorConstant) {
   // A first-order loss with a larger constant passes the order gate but not the magnitude gate
-  // (2 x the measured constant): the solver sees g = 6 instead of 2 (loss 1.67e-3 against the bound
-  // 1.24e-3 at dt = 5e-4, measured), the case's gates stay those of the default parameters.
+  // (2 x the measured constant): the solver sees g = 6 instead of 2 (loss 1.99e-3 against the bound
+  // 1.47e-3 at dt / tau = 5e-4, measured), the case's gates stay those of the default parameters.
   Case perturbed = named("superhelix/energy-decay");
   const auto runner = perturbed.run_level;
   perturbed.run_level = [runner](const Parameters& p, double level) {

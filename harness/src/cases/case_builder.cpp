@@ -76,15 +76,57 @@ Window helix_turns_window(double low, double high, std::string why) {
           }};
 }
 
-Window swing_window(double length, double max_swing) {
-  std::string statement = fmt::format("t_end sqrt(g / {:g}) <= {:g} (the swing the time levels resolve)", length,
-                                      max_swing);
+double bending_time(const Parameters& p, const std::string& stiffness) {
+  const double L = parameter_value(p, "L");
+  return L * L * std::sqrt(parameter_value(p, "rhoS") / parameter_value(p, stiffness));
+}
+
+Window swing_window(double max_swing) {
+  std::string statement = fmt::format("t_end sqrt(g / L) <= {:g} (the swing the time levels resolve)", max_swing);
   return {statement, [=](const Parameters& p) {
-            const double swing = parameter_value(p, "t_end") * std::sqrt(parameter_value(p, "g") / length);
+            const double L = parameter_value(p, "L");
+            const double swing = parameter_value(p, "t_end") * std::sqrt(parameter_value(p, "g") / L);
             if (!(swing <= max_swing))
               throw InputError("t_end", fmt::format("invalid parameters: t_end sqrt(g / L) = {} (L = {}) must be <= "
                                                     "{:g}, the swing the levels resolve",
-                                                    format_value(swing), format_value(length), max_swing));
+                                                    format_value(swing), format_value(L), max_swing));
+          }};
+}
+
+Window horizon_window(std::string stiffness, double low, double high, std::string why) {
+  std::string statement = fmt::format("t_end / tau {}, tau = L^2 sqrt(rhoS / {}) ({})", interval_text(low, high),
+                                      stiffness, why);
+  return {statement, [=](const Parameters& p) {
+            const double tau = bending_time(p, stiffness), t_end = parameter_value(p, "t_end");
+            if (!(t_end / tau >= low && t_end / tau <= high))
+              throw InputError("t_end", fmt::format("invalid parameter 't_end' = {}: t_end / tau = {} (tau = L^2 sqrt("
+                                                    "rhoS / {}) = {}) must be {} ({})",
+                                                    format_value(t_end), format_value(t_end / tau), stiffness,
+                                                    format_value(tau), interval_text(low, high), why));
+          }};
+}
+
+Window gravity_window(std::string stiffness, double low, double high, std::string why) {
+  std::string statement = fmt::format("g rhoS L^3 / {} {} ({})", stiffness, interval_text(low, high), why);
+  return {statement, [=](const Parameters& p) {
+            const double g = parameter_value(p, "g"), L = parameter_value(p, "L");
+            const double weight = g * parameter_value(p, "rhoS") * L * L * L / parameter_value(p, stiffness);
+            if (!(weight >= low && weight <= high))
+              throw InputError("g", fmt::format("invalid parameter 'g' = {}: g rhoS L^3 / {} = {} must be {} ({})",
+                                                format_value(g), stiffness, format_value(weight),
+                                                interval_text(low, high), why));
+          }};
+}
+
+Window group_window(std::string parameter, std::string group, std::function<double(const Parameters&)> value,
+                    double low, double high, std::string why) {
+  std::string statement = fmt::format("{} {} ({})", group, interval_text(low, high), why);
+  return {statement, [=](const Parameters& p) {
+            const double v = value(p);
+            if (!(v >= low && v <= high))
+              throw InputError(parameter, fmt::format("invalid parameter '{}' = {}: {} = {} must be {} ({})", parameter,
+                                                      format_value(parameter_value(p, parameter)), group,
+                                                      format_value(v), interval_text(low, high), why));
           }};
 }
 

@@ -2,6 +2,7 @@
 // The one case builder of the families that live one problem per file under
 // harness/src/cases/<family>/ (ARCHITECTURE.md, convention 12): metric samples and specs, element
 // levels, measured bounds, the Case itself, and the 3-D Noether metrics every 3-D rod case reports.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -63,9 +64,22 @@ Window load_window(std::string length, double low, double high, std::string why)
 // naming w otherwise.
 Window weight_window(double low, double high, std::string why);
 
-// The swing t_end sqrt(g / length) a dynamic case's time levels resolve, at most max_swing (measured per
-// case); InputError naming t_end otherwise.
-Window swing_window(double length, double max_swing);
+// Dynamic cases in the user's units: the rod's bending time tau = L^2 sqrt(rhoS / EI) from the parameters L,
+// rhoS and the named bending stiffness. Their time levels are dt / tau and their start rates are given in
+// units of tau, so that the resolution and the measured windows do not depend on the scales.
+double bending_time(const Parameters& p, const std::string& stiffness);
+
+// The swing t_end sqrt(g / L) a dynamic case's time levels resolve, at most max_swing (measured per case);
+// InputError naming t_end otherwise.
+Window swing_window(double max_swing);
+// The horizon t_end / tau in [low, high] (tau from bending_time); InputError naming t_end otherwise.
+Window horizon_window(std::string stiffness, double low, double high, std::string why);
+// The gravity g rhoS L^3 / EI in [low, high]; InputError naming g otherwise.
+Window gravity_window(std::string stiffness, double low, double high, std::string why);
+// Any dimensionless group of the parameters (its formula in `group`, e.g. "rhoI0 / (rhoS L^2)") in [low, high];
+// InputError naming `parameter` otherwise.
+Window group_window(std::string parameter, std::string group, std::function<double(const Parameters&)> value,
+                    double low, double high, std::string why);
 
 // The turns L sin(pitch_angle) / (2 pi radius) of a uniform helix, from the parameters L, radius and
 // pitch_angle (the helix cases of both 3-D rods).

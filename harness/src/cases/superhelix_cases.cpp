@@ -565,25 +565,28 @@ LevelOutput run_modes(const Parameters& p, double level) {
 // ---- dynamics: energy decay, dense vs recursive ---------------------------------------------------
 
 // A genuinely 3-D release: a twisted, curved rod (natural strains (0.5, 0, 1.2)/L) with anisotropic
-// stiffness GJ != EI1 != EI2 and a solid elliptic section (semi-axes 0.1 along n1, 0.06 along n2:
+// stiffness GJ != EI1 != EI2 and a solid elliptic section (semi-axes L/7 along n1, 0.6 L/7 along n2:
 // rho I0 = rho I1 + rho I2, rho I1 != rho I2), clamped in a tilted frame, under gravity along a
 // direction in none of the rod's planes, started from its natural shape with strain rates in all
-// three components (twist, kappa1, kappa2): it swings and twists out of plane. L = 0.7, rho S = 0.3.
+// three components (twist, kappa1, kappa2): it swings and twists out of plane.
 // J_scale multiplies the rotational inertia (0: the translational-only Super-Helix, whose twist is
 // nearly massless: it gains energy at some steps, test FreeMotionWithoutRotationalInertiaGainsEnergy).
-constexpr double kEnergyRodLength = superhelix_cases::kEnergyReleaseLength;
 sh::RodModel energy_model(const Parameters& p) {
-  return superhelix_cases::energy_release_model(element_count(parameter_value(p, "N")), parameter_value(p, "g"),
+  return superhelix_cases::energy_release_model(element_count(parameter_value(p, "N")), p,
                                                 parameter_value(p, "J_scale"));
 }
 
-LevelOutput run_energy(const Parameters& p, double dt) {
+// The level is dt / tau; the step is t_end / round(t_end / dt), so that every level ends at t_end.
+LevelOutput run_energy(const Parameters& p, double dt_over_tau) {
   const double t_end = parameter_value(p, "t_end");
   const sh::RodModel model = energy_model(p);
-  const auto steps = static_cast<std::size_t>(std::llround(t_end / dt));
+  const auto steps = static_cast<std::size_t>(
+      std::max(1.0, std::round(t_end / (dt_over_tau * cases::bending_time(p, "EI1")))));
+  const double dt = t_end / double(steps);
   const auto dofs = static_cast<Eigen::Index>(3 * model.elements);
   sh::DynamicState state{sh::natural_strain_vector(model), VecX::Zero(dofs), 0.0};
-  for (std::size_t e = 0; e < model.elements; ++e) state.qdot.segment<3>(static_cast<Eigen::Index>(3 * e)) = Vec3(1.5, 1.0, -0.7);
+  const Vec3 rates = superhelix_cases::energy_release_rates(p);
+  for (std::size_t e = 0; e < model.elements; ++e) state.qdot.segment<3>(static_cast<Eigen::Index>(3 * e)) = rates;
   const VecX stiffness = sh::generalised_stiffness(model);
   const double e0 = sh::total_energy(model, state);
   superhelix_cases::EnergyLedger ledger(e0);
@@ -701,17 +704,44 @@ LevelOutput run_accelerated_root(const Parameters& p, double level) {
 
 }  // namespace
 
-sh::RodModel superhelix_cases::energy_release_model(std::size_t elements, double g, double J_scale) {
+sh::RodModel superhelix_cases::energy_release_model(std::size_t elements, const Parameters& p, double J_scale) {
   sh::RodModel model;
   model.elements = elements;
-  model.length = kEnergyReleaseLength;
-  model.line_density = 0.3;
-  model.stiffness = Vec3(0.03, 0.05, 0.08);
-  model.rotational_inertia = J_scale * sh::elliptic_section_inertia(model.line_density, 0.1, 0.06);
+  model.length = parameter_value(p, "L");
+  model.line_density = parameter_value(p, "rhoS");
+  model.stiffness = Vec3(parameter_value(p, "GJ"), parameter_value(p, "EI1"), parameter_value(p, "EI2"));
+  model.rotational_inertia =
+      J_scale * sh::elliptic_section_inertia(model.line_density, model.length / 7.0, 0.6 * model.length / 7.0);
   model.natural_strain = Vec3(0.5, 0.0, 1.2) / model.length;
   model.root_frame = cases::tilted_frame(0.7);
-  model.gravity = g * Vec3(0.2, -0.3, -1.0).normalized();
+  model.gravity = parameter_value(p, "g") * Vec3(0.2, -0.3, -1.0).normalized();
   return model;
+}
+
+Vec3 superhelix_cases::energy_release_rates(const Parameters& p) {
+  return Vec3(1.25, 0.85, -0.6) / (parameter_value(p, "L") * cases::bending_time(p, "EI1"));
+}
+
+void superhelix_cases::require_energy_release_windows(Case& c, double max_swing, double max_horizon) {
+  // Measured 2026-11-28 with the default levels, one ratio at a time (superhelix/energy-decay; the super-clothoid
+  // at the ends: orders 0.92 .. 0.97): the loss's order 0.949 at GJ / EI1 = 0.1, 0.921 at 3, 0.906 at 4, 0.89 at
+  // 5 (the torsion's omega dt grows); 0.96 at EI2 / EI1 = 0.1, 0.921 at 10, 0.912 at 20, 0.893 at 40.
+  cases::require(c, cases::ratio_window("GJ", "EI1", 0.1, 3.0, "where the time levels resolve the release"));
+  cases::require(c, cases::ratio_window("EI2", "EI1", 0.1, 10.0, "where the time levels resolve the release"));
+  // g = 100 at the defaults (g rhoS L^3 / EI1 = 206), measured before the scales were parameters.
+  cases::require(c, cases::gravity_window("EI1", 0.0, 206.0, "measured with the default levels"));
+  cases::require(c, cases::horizon_window("EI1", 0.01, max_horizon, "the levels' first-order regime"));
+  cases::require(c, cases::swing_window(max_swing));
+}
+
+Parameters superhelix_cases::energy_release_parameters() {
+  return {length_parameter(0.7),
+          make_parameter("rhoS", 0.3, 0.0, 1e12, true, false, "mass/length", "line density"),
+          make_parameter("GJ", 0.03, 0.0, 1e12, true, false, "force length^2", "twisting stiffness"),
+          make_parameter("EI1", 0.05, 0.0, 1e12, true, false, "force length^2", "bending stiffness about n1"),
+          make_parameter("EI2", 0.08, 0.0, 1e12, true, false, "force length^2", "bending stiffness about n2"),
+          make_parameter("g", 2.0, 0.0, 1e6, true, false, "length/time^2", "gravity"),
+          make_parameter("t_end", 0.25, 0.0, 1e6, true, false, "time", "horizon")};
 }
 
 void superhelix_cases::EnergyLedger::record(double time, double energy) {
@@ -1022,14 +1052,14 @@ void register_superhelix_cases(Registry& registry) {
     registry.add(std::move(c));
   }
   {
-    // Measured (rodvv sweep over dt = 4e-3 .. 1.25e-4, 2026-11-22): energy_loss 4.41e-3, 2.31e-3,
-    // 1.20e-3, 6.19e-4, 3.17e-4, 1.61e-4 (pairwise orders 0.936 0.942 0.956 0.967 0.976: an O(h^2) part
-    // decays; least squares 0.95 over the default levels); every step loses energy (max_energy_increase
-    // = 0 at every level); dense vs recursive: relative residual <= 2.9e-15, forward difference
-    // <= 1.03e-12 (cond(M + D) x eps: a diagnostic). With J_scale = 0 the same release gains energy at
-    // some steps (up to ~1e-6 |E| for dt <= 1e-3, measured): the twist is then nearly massless.
+    // Measured (rodvv sweep over dt / tau = 4e-3 .. 1.25e-4, tau = 1.2003 at the defaults, 2026-11-28):
+    // energy_loss 5.18e-3, 2.74e-3, 1.43e-3, 7.37e-4, 3.78e-4, 1.93e-4 (pairwise orders 0.917 0.938 0.956 0.963
+    // 0.974: an O(h^2) part decays; least squares 0.95 over the default levels); every step loses energy
+    // (max_energy_increase = 0 at every level); dense vs recursive: relative residual <= 3.5e-15, forward
+    // difference <= 1e-12 (cond(M + D) x eps: a diagnostic). With J_scale = 0 the same release gains energy at
+    // some steps (up to ~1e-6 |E| for dt <= 1e-3, measured 2026-11-22): the twist is then nearly massless.
     const std::vector<double> levels{2e-3, 1e-3, 5e-4};
-    constexpr double kEnergyLossAtFinest = 6.1886e-4;  // at dt = 5e-4
+    constexpr double kEnergyLossAtFinest = 7.3735e-4;  // at dt / tau = 5e-4
     std::vector<GateSpec> gates{
         order_gate("energy_loss", 1.0, "semi-implicit Euler dissipates at first order in h (ALGORITHMS.md §1.5)"),
         measured_bound("energy_loss", kEnergyLossAtFinest, levels.back(), 1.0),
@@ -1049,28 +1079,29 @@ void register_superhelix_cases(Registry& registry) {
                          "as a relative residual)")};
     Case c = make_case(
         "superhelix/energy-decay", "undamped 3-D swing and twist under gravity: energy decay and dense vs O(N) step",
-        "Super-Helix cantilever (N elements, L = 0.7, rho S = 0.3, GJ = 0.03, EI1 = 0.05, EI2 = 0.08, solid "
-        "elliptic section with semi-axes 0.1 and 0.06: rotational inertia (rho I0, rho I1, rho I2) = "
-        "(1.02e-3, 2.7e-4, 7.5e-4) x J_scale, natural strains (0.5, 0, 1.2)/L, tilted clamp) released from its "
-        "natural shape with strain rates (1.5, 1.0, -0.7) in every element, under gravity g along a direction "
-        "in none of its planes, no damping: it swings and twists out of plane. Semi-implicit Euler (implicit "
-        "elastic term, explicit velocity terms including the gyroscopic torque omega x J omega).",
+        "Super-Helix cantilever (N elements, length L, line density rho S, stiffnesses GJ != EI1 != EI2; defaults "
+        "0.7, 0.3, (0.03, 0.05, 0.08); a solid elliptic section with semi-axes L/7 and 0.6 L/7: rotational "
+        "inertia (rho I0, rho I1, rho I2) = (1.02e-3, 2.7e-4, 7.5e-4) x J_scale at the defaults; natural strains "
+        "(0.5, 0, 1.2)/L; tilted clamp) released from its natural shape with strain rates (1.25, 0.85, -0.6) / "
+        "(L tau) in every element, tau = L^2 sqrt(rho S / EI1), under gravity g along a direction in none of its "
+        "planes, no damping: it swings and twists out of plane. Semi-implicit Euler (implicit elastic term, "
+        "explicit velocity terms including the gyroscopic torque omega x J omega); the level is dt / tau.",
         "E = T + U + V (T with the rotational kinetic energy) is conserved by the exact flow; the loss "
         "E(0) - E(t_end) is the error, O(h)",
         "ALGORITHMS.md §1.5-1.7; Bertails et al. 2006; Bertails 2009 (linear time); issue 11 (rotational inertia)",
         // N <= 128: the dense step is O(N^3) per step; measured 0.9 s at N = 32, 5.5 s at 64, 39 s at 128
         // for the whole case (N = 256 would take minutes, issue 14).
-        {integer_parameter("N", 8.0, 1.0, 128.0, "number of elements"),
-         make_parameter("g", 2.0, 0.0, 100.0, true, false, "length/time^2", "gravity"),
-         // t_end in [0.01, 1]: the first-order loss is fitted over dt = 2e-3 .. 5e-4; at 0.0025 (one coarse
-         // step) and at 3 or 10 (an O(h^2) part not yet decayed over the longer swing) the order is 0.83 ..
-         // 0.85 (measured 2026-11-26).
-         make_parameter("t_end", 0.25, 0.01, 1.0, false, false, "time", "horizon"),
-         make_parameter("J_scale", 1.0, 0.0, 1e3, false, false, "",
-                        "factor on the section's rotational inertia (0: translational inertia only)")},
+        [] {
+          Parameters p = superhelix_cases::energy_release_parameters();
+          p.insert(p.begin(), integer_parameter("N", 8.0, 1.0, 128.0, "number of elements"));
+          p.push_back(make_parameter("J_scale", 1.0, 0.0, 1e3, false, false, "",
+                                     "factor on the section's rotational inertia (0: translational inertia only)"));
+          return p;
+        }(),
         // pairwise orders of the loss 0.93 .. 0.97 from dt = 4e-3 down to 1.25e-4 (an O(h^2) part
         // decays): the default levels start at 2e-3 so that the fit is inside the window
-        {"dt", "time step", ResolutionScale::StepSize, levels, {4e-3, 2e-3, 1e-3, 5e-4, 2.5e-4, 1.25e-4}},
+        {"dt/tau", "time step over tau = L^2 sqrt(rho S / EI1)", ResolutionScale::StepSize, levels,
+         {4e-3, 2e-3, 1e-3, 5e-4, 2.5e-4, 1.25e-4}},
         {{"energy_loss", MetricKind::Error, "", "(E(0) - E(t_end)) / |E|", false, 1.0},
          diagnostic_metric("max_energy_increase", "max (E_{n+1} - E_n) / |E| (<= round-off: monotone)"),
          {"dense_vs_recursive", MetricKind::Error, "",
@@ -1079,10 +1110,11 @@ void register_superhelix_cases(Registry& registry) {
          diagnostic_metric("dense_vs_recursive_forward", "max over steps of |dv_dense - dv_recursive|_inf / |dv|_inf"),
          diagnostic_metric("rotational_kinetic_share", "max over steps of T_rotational / T")},
         gates, run_energy);
-    // The swing the levels resolve: t_end sqrt(g / L) <= 3 (L = 0.7; defaults 0.42): at 3.8 (g = 10,
-    // t_end = 1) and 4.8 (g = 100, t_end = 0.4) the loss's order leaves its window; 3 passes at g = 20,
-    // 50, 100 (measured 2026-11-26).
-    cases::require(c, cases::swing_window(kEnergyRodLength, 3.0));
+    // The swing the levels resolve: t_end sqrt(g / L) <= 3 (defaults 0.42): at 3.8 (g = 10, t_end = 1, L = 0.7)
+    // and 4.8 (g = 100, t_end = 0.4) the loss's order leaves its window; 3 passes at g = 20, 50, 100
+    // (measured 2026-11-26). The horizon t_end / tau <= 0.834 (t_end = 1 at the defaults: at 3 or 10 the order
+    // was 0.83 .. 0.85, an O(h^2) part not yet decayed over the longer swing).
+    superhelix_cases::require_energy_release_windows(c, 3.0, 0.834);
     registry.add(std::move(c));
   }
   {

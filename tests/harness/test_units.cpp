@@ -1,0 +1,67 @@
+// Cases posed in the user's units (issue 15) report the same metrics in any units: each case below runs at its
+// coarsest default level with its parameters converted to units in which a length is 2.3 times, a mass 0.37
+// times and a time 1.9 times its old value (unit_factor: force = mass length / time^2), and must give the same
+// metric values to 1e-8 of their size (the solvers' Newton and step tolerances, measured <= 2e-12 relative).
+// Their levels are dimensionless (N, dt / tau, b L / EI) and their metrics are reported in the problem's units,
+// so a power of L, EI or rho S missing in a set-up, a reference or a metric's unit turns this red (tested below:
+// the soft wall's softness without its 1 / L).
+#include <gtest/gtest.h>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "case_test_support.hpp"
+
+namespace {
+
+using namespace rodvv::harness;
+using rodvv::testing::expect_metrics_free_of_units;
+using rodvv::testing::named_case;
+
+constexpr double kLength = 2.3, kMass = 0.37, kTime = 1.9;
+
+struct UnitsCase {
+  std::string name;
+  std::vector<std::string> round_off;  // metrics counted in eps or at round-off: not compared
+};
+void PrintTo(const UnitsCase& u, std::ostream* os) { *os << u.name; }
+
+class UnitsFree : public ::testing::TestWithParam<UnitsCase> {};
+
+TEST_P(UnitsFree, SameMetricsInOtherUnits) {
+  const UnitsCase& u = GetParam();
+  expect_metrics_free_of_units(named_case(u.name), kLength, kMass, kTime, 1e-8, 1e-6, u.round_off);
+}
+
+const std::vector<std::string> kNewtonRoundOff{"penetration", "newton_iterations", "P_vs_walls", "flat_offset"};
+const std::vector<std::string> kStepRoundOff{"dense_vs_recursive", "dense_vs_recursive_forward", "max_energy_increase",
+                                             "euler_max_increase", "newton_iterations_per_step"};
+
+INSTANTIATE_TEST_SUITE_P(
+    PhysicalScaleCases, UnitsFree,
+    ::testing::Values(UnitsCase{"elastica-contact/cavity-free/polygon", kNewtonRoundOff},
+                      UnitsCase{"elastica-contact/cavity-point/arcs", kNewtonRoundOff},
+                      UnitsCase{"elastica-contact/cavity-line/polygon", kNewtonRoundOff},
+                      UnitsCase{"elastica-contact/cavity-point/polygon-ring", kNewtonRoundOff},
+                      UnitsCase{"elastica-contact/soft-wall", kNewtonRoundOff},
+                      UnitsCase{"elastica-contact/propped-cantilever/arcs", kNewtonRoundOff},
+                      UnitsCase{"elastica/heavy-cantilever/polygon", kNewtonRoundOff},
+                      UnitsCase{"superhelix/energy-decay", kStepRoundOff},
+                      UnitsCase{"superhelix/clothoid-energy-decay", kStepRoundOff},
+                      UnitsCase{"rod3d/energy-in-time", kStepRoundOff}),
+    [](const ::testing::TestParamInfo<UnitsCase>& param_info) {
+      return rodvv::testing::test_name_of_case(param_info.param.name);
+    });
+
+TEST(UnitFactor, ParsesTheUnitTexts) {
+  using rodvv::testing::unit_factor;
+  EXPECT_DOUBLE_EQ(unit_factor("force length^2", 2.0, 3.0, 5.0), 3.0 * 2.0 / 25.0 * 4.0);
+  EXPECT_DOUBLE_EQ(unit_factor("mass / length", 2.0, 3.0, 5.0), 1.5);
+  EXPECT_DOUBLE_EQ(unit_factor("1/time^2", 2.0, 3.0, 5.0), 1.0 / 25.0);
+  EXPECT_DOUBLE_EQ(unit_factor("", 2.0, 3.0, 5.0), 1.0);
+  EXPECT_DOUBLE_EQ(unit_factor("rad", 2.0, 3.0, 5.0), 1.0);
+  EXPECT_THROW(unit_factor("furlong", 2.0, 3.0, 5.0), std::invalid_argument);
+}
+
+}  // namespace
