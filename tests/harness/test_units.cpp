@@ -49,6 +49,7 @@ INSTANTIATE_TEST_SUITE_P(
                       UnitsCase{"elastica/heavy-cantilever/polygon", kNewtonRoundOff},
                       UnitsCase{"superhelix/energy-decay", kStepRoundOff},
                       UnitsCase{"superhelix/clothoid-energy-decay", kStepRoundOff},
+                      UnitsCase{"superhelix/spinning-clamp-oracle", kStepRoundOff},
                       UnitsCase{"rod3d/energy-in-time", kStepRoundOff}),
     [](const ::testing::TestParamInfo<UnitsCase>& param_info) {
       return rodvv::testing::test_name_of_case(param_info.param.name);
