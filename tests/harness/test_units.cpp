@@ -1,7 +1,8 @@
 // Cases posed in the user's units (issue 15) report the same metrics in any units: each case below runs at its
 // coarsest default level with its parameters converted to units in which a length is 2.3 times, a mass 0.37
 // times and a time 1.9 times its old value (unit_factor: force = mass length / time^2), and must give the same
-// metric values to 1e-8 of their size (the solvers' Newton and step tolerances, measured <= 2e-12 relative).
+// metric errors to 1e-8 (the errors are dimensionless, in the case's own units: compared with an absolute
+// tolerance, the solvers' Newton and step tolerances, measured <= 4e-10; the knots' relaxations 1e-5).
 // Their levels are dimensionless (N, dt / tau, b L / EI) and their metrics are reported in the problem's units,
 // so a power of L, EI or rho S missing in a set-up, a reference or a metric's unit turns this red (tested below:
 // the soft wall's softness without its 1 / L).
@@ -24,6 +25,7 @@ constexpr double kLength = 2.3, kMass = 0.37, kTime = 1.9;
 struct UnitsCase {
   std::string name;
   std::vector<std::string> round_off;  // metrics counted in eps or at round-off: not compared
+  double relative = 1e-8;              // the solver's tolerance, relative
 };
 void PrintTo(const UnitsCase& u, std::ostream* os) { *os << u.name; }
 
@@ -31,10 +33,11 @@ class UnitsFree : public ::testing::TestWithParam<UnitsCase> {};
 
 TEST_P(UnitsFree, SameMetricsInOtherUnits) {
   const UnitsCase& u = GetParam();
-  expect_metrics_free_of_units(named_case(u.name), kLength, kMass, kTime, 1e-8, 1e-6, u.round_off);
+  expect_metrics_free_of_units(named_case(u.name), kLength, kMass, kTime, u.relative, 1.0, u.round_off);
 }
 
 const std::vector<std::string> kNewtonRoundOff{"penetration", "newton_iterations", "P_vs_walls", "flat_offset"};
+const std::vector<std::string> kKnotRoundOff{"iterations", "equilibrium_residual", "residual"};
 const std::vector<std::string> kStepRoundOff{"dense_vs_recursive", "dense_vs_recursive_forward", "max_energy_increase",
                                              "euler_max_increase", "newton_iterations_per_step"};
 
@@ -50,7 +53,11 @@ INSTANTIATE_TEST_SUITE_P(
                       UnitsCase{"superhelix/energy-decay", kStepRoundOff},
                       UnitsCase{"superhelix/clothoid-energy-decay", kStepRoundOff},
                       UnitsCase{"superhelix/spinning-clamp-oracle", kStepRoundOff},
-                      UnitsCase{"rod3d/energy-in-time", kStepRoundOff}),
+                      UnitsCase{"rod3d/energy-in-time", kStepRoundOff},
+                      // The knots' relaxations stop at a residual of about 1e-9 of the load: their metrics agree
+                      // to 1e-6 (measured 6e-7 on the Super-Helix's H deviation).
+                      UnitsCase{"knot/trefoil-nodal", kKnotRoundOff, 1e-5},
+                      UnitsCase{"knot/trefoil-superhelix", kKnotRoundOff, 1e-5}),
     [](const ::testing::TestParamInfo<UnitsCase>& param_info) {
       return rodvv::testing::test_name_of_case(param_info.param.name);
     });

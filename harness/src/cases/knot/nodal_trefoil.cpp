@@ -92,14 +92,11 @@ LevelOutput relax_nodal_trefoil_hard(const TrefoilKnot& k, std::size_t n) {
   return output;
 }
 
-Parameter nodal_looseness_parameter() {
-  // From 0.07 (measured 2026-11-26 over barrier 50 .. 5000 and C/B 0.3 .. 100): at 0.05 the knot of the
-  // coarsest level (50 edges) comes undone (no self-contact at equilibrium: the thinner strands passed
-  // through each other), at 0.06 with barrier 5000 the H deviation's order is 1.53.
-  return make_parameter("looseness", 0.1, 0.07, 0.15, false, false, "", "h sqrt(T/B), the rod's radius in knot units");
-}
-
 void require_nodal_trefoil_window(Case& c) {
+  // The looseness from 0.07 (measured 2026-11-26 over barrier 50 .. 5000 and C/B 0.3 .. 100): at 0.05 the knot
+  // of the coarsest level (50 edges) comes undone (no self-contact at equilibrium: the thinner strands passed
+  // through each other), at 0.06 with barrier 5000 the H deviation's order is 1.53.
+  require(c, looseness_window(0.07, 0.15, "where the tied knot holds at the coarsest level and its levels resolve H"));
   // The knot is posed in units of sqrt(B/T) (B = 1e12 with C scaled alike, T = 1e-3 .. 1e12 pass), so what
   // shapes it is C/B: measured 0.3 .. 100 pass; at C/B = 0.1 the H deviation's order leaves its window,
   // at 0.007 it is -0.36 and at B = 1e12 (C/B = 1e-12) the knot comes undone. Real rods have C/B =

@@ -28,9 +28,8 @@ LevelOutput relax_nodal_trefoil(const TrefoilKnot& knot, std::size_t edges);
 // metrics gain overlap_over_tolerance (the deepest 2h - d over the statics' gap tolerance, tolerance x L)
 // and the diagnostic hard_iterations; iterations counts both stages.
 LevelOutput relax_nodal_trefoil_hard(const TrefoilKnot& knot, std::size_t edges);
-// The nodal trefoil cases' looseness h sqrt(T/B), default 0.1 in [0.07, 0.15], and their window C/B in
-// [0.3, 100] (measured on knot/trefoil-nodal, nodal_trefoil.cpp).
-Parameter nodal_looseness_parameter();
+// The nodal trefoil cases' windows: the looseness h sqrt(T/B) in [0.07, 0.15] and C/B in [0.3, 100] (measured on
+// knot/trefoil-nodal, nodal_trefoil.cpp).
 void require_nodal_trefoil_window(Case& c);
 
 // contact_pairs, deepest_overlap, iterations, equilibrium_residual.

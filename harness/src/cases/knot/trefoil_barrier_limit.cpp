@@ -58,7 +58,6 @@ struct Rod {
   std::string name, title_rod, barrier_unit, method;
   Relax relax;
   std::vector<MetricSpec> diagnostics;
-  Parameter looseness;
   double overlap_order_low, overlap_order_high;
   std::string order_rationale;
   double overlap_at_2000, H_deviation_max;
@@ -98,7 +97,7 @@ Case barrier_limit_case(Rod rod) {
        "PHYSICS.md §5.1 (a penalty's error vanishes as k_c -> infinity); Audoly, Clauvelin & Neukirch 2007 (PRL "
        "99:164301)",
        rod.method},
-      trefoil_parameters({rod.looseness}),
+      trefoil_parameters({radius_parameter()}),
       Resolution{"compliance", "1 / barrier, the barrier k in units of T / " + rod.barrier_unit + " (N = 100)",
                  ResolutionScale::StepSize, {1.0 / 125.0, 1.0 / 500.0, 1.0 / 2000.0},
                  {1.0 / 125.0, 1.0 / 500.0, 1.0 / 2000.0, 1.0 / 8000.0}, 1.0 / 8000.0},
@@ -110,8 +109,7 @@ Case barrier_limit_case(Rod rod) {
 void add_trefoil_barrier_limit(Registry& registry) {
   Case nodal = barrier_limit_case(
       {"nodal", "nodal rod", "h^2 (per segment pair)", kContactStaticsMethod, relax_nodal_trefoil,
-       nodal_trefoil_diagnostic_specs(),
-       nodal_looseness_parameter(), 0.5, 0.5,
+       nodal_trefoil_diagnostic_specs(), 0.5, 0.5,
        "a point force k delta^2 per segment pair, the braid's load on the same pairs at a fixed mesh: delta ~ k^(-1/2) "
        "(measured 0.48, 0.52, 0.46 over barrier 125 .. 8000)",
        0.012079, 0.166});
@@ -119,14 +117,13 @@ void add_trefoil_barrier_limit(Registry& registry) {
   registry.add(std::move(nodal));
   Case superhelix = barrier_limit_case(
       {"superhelix", "Super-Helix", "h^3 (per unit length)", kSuperHelixContactMethod, relax_superhelix_trefoil,
-       superhelix_trefoil_diagnostic_specs(),
-       make_parameter("looseness", 0.1, 0.08, 0.12, false, false, "", "h sqrt(T/B), the rod's radius in knot units"),
-       0.4, 0.5,
+       superhelix_trefoil_diagnostic_specs(), 0.4, 0.5,
        "a line force k delta^2: 2/5 where strands cross (F ~ k delta^(5/2)), 1/2 where they run parallel (file "
        "comment; measured 0.42, 0.40, 0.41 over barrier 125 .. 8000)",
        0.014762, 0.038});
   require(superhelix,
           ratio_window("C", "B", 0.3, 100.0, "the twist-to-bending ratios at which the trefoil was measured"));
+  require(superhelix, looseness_window(0.08, 0.12, "the looseness at which the trefoil was measured"));
   registry.add(std::move(superhelix));
 }
 

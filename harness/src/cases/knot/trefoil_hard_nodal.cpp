@@ -53,11 +53,11 @@ void add_trefoil_hard_nodal(Registry& registry) {
       {"knot/trefoil-hard-nodal", "Open trefoil knot under a dead pull with hard self-contact: H = T (nodal rod)",
        "Inextensible isotropic rod (B, C), root clamped, tip free under the dead load T e_x, tied as the closure of "
        "the braid sigma_1^3, relaxed with a barrier and then solved with hard frictionless self-contact d >= 2h "
-       "(complementarity inside Newton) of radius h = looseness sqrt(B/T).",
+       "(complementarity inside Newton) of radius h (the looseness h sqrt(T/B) = 0.1 at the defaults).",
        "H(s) = T at every s, through the braid (Noether, frictionless contact; PHYSICS.md §1.2, §5.1); no overlap "
        "beyond the solver's tolerance",
        "Audoly, Clauvelin & Neukirch 2007 (PRL 99:164301); PHYSICS.md §5.1; ALGORITHMS.md §4", kHardContactStaticsMethod},
-      trefoil_parameters({nodal_looseness_parameter()}),
+      trefoil_parameters({radius_parameter()}),
       element_levels("number of edges", {50, 100, 200}, {50, 100, 200, 400}), std::move(metrics), std::move(gates),
       run);
   require_nodal_trefoil_window(c);

@@ -14,9 +14,23 @@ namespace rodvv::harness::knot_cases {
 double TrefoilKnot::lambda() const { return std::sqrt(B / T); }
 double TrefoilKnot::radius() const { return looseness * lambda(); }
 
+namespace {
+double looseness_of(const Parameters& p) {
+  return parameter_value(p, "radius") * std::sqrt(parameter_value(p, "T") / parameter_value(p, "B"));
+}
+}  // namespace
+
 TrefoilKnot trefoil_knot(const Parameters& p, std::optional<double> looseness, std::optional<double> barrier) {
   return {parameter_value(p, "B"), parameter_value(p, "C"), parameter_value(p, "T"),
-          looseness ? *looseness : parameter_value(p, "looseness"), barrier ? *barrier : parameter_value(p, "barrier")};
+          looseness ? *looseness : looseness_of(p), barrier ? *barrier : parameter_value(p, "barrier")};
+}
+
+Parameter radius_parameter() {
+  return make_parameter("radius", 0.05, 0.0, 1e6, true, false, "length", "rod radius h (contact at distance 2h)");
+}
+
+cases::Window looseness_window(double low, double high, std::string why) {
+  return cases::group_window("radius", "the looseness radius sqrt(T / B)", looseness_of, low, high, std::move(why));
 }
 
 LoopRelations loop_relations(const SpatialRodSolution& solution, double B, double T, const std::string& method,

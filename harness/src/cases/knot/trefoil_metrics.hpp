@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "../case_builder.hpp"
 #include "rodvv/common/spatial_rod.hpp"
 #include "rodvv/harness/case.hpp"
 #include "rodvv/harness/parameters.hpp"
@@ -21,8 +22,8 @@ struct TrefoilKnot {
   double lambda() const;  // sqrt(B/T), the loop's scale
   double radius() const;  // h = looseness lambda
 };
-// From the parameters B, C, T, looseness and barrier; looseness and barrier may be given instead (a sweep
-// over one of them, whose level is not a parameter).
+// From the parameters B, C, T, radius (h: looseness = radius sqrt(T/B)) and barrier; looseness and barrier may be
+// given instead (a sweep over one of them, whose level is not a parameter).
 TrefoilKnot trefoil_knot(const Parameters& p, std::optional<double> looseness = std::nullopt,
                          std::optional<double> barrier = std::nullopt);
 
@@ -55,7 +56,12 @@ void add_trefoil_metrics(LevelOutput& output, const SpatialRodSolution& solution
 std::vector<MetricSpec> trefoil_metric_specs();
 
 // B = 1.3 (EI1 = EI2), C = 0.9 (GJ), T = 5.2 (the dead pull), each in (0, 1e12], then the case's own
-// (looseness, barrier).
+// (radius, barrier).
 Parameters trefoil_parameters(std::vector<Parameter> own);
+
+// The rod's radius h (a length; default 0.05: looseness 0.1 at the default B and T).
+Parameter radius_parameter();
+// The looseness h sqrt(T/B) in [low, high] (measured per rod); InputError naming radius otherwise.
+cases::Window looseness_window(double low, double high, std::string why);
 
 }  // namespace rodvv::harness::knot_cases

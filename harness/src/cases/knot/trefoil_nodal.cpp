@@ -48,10 +48,11 @@ void add_trefoil_nodal(Registry& registry) {
       "knot",
       {"knot/trefoil-nodal", "Open trefoil knot under a dead pull: H = T through self-contact (nodal rod)",
        "Inextensible isotropic rod (B, C), root clamped, tip free under the dead load T e_x, tied as the closure of "
-       "the braid sigma_1^3 and relaxed with frictionless self-contact (barrier) of radius h = looseness sqrt(B/T).",
+       "the braid sigma_1^3 and relaxed with frictionless self-contact (barrier) of radius h (the looseness h "
+       "sqrt(T/B) = 0.1 at the defaults).",
        "H(s) = T at every s, through the braid (Noether, frictionless contact; PHYSICS.md §1.2, §5.1)",
        "Audoly, Clauvelin & Neukirch 2007 (PRL 99:164301); PHYSICS.md §5.1", kContactStaticsMethod},
-      trefoil_parameters({nodal_looseness_parameter(), make_parameter("barrier", 500.0, 50.0, 5000.0, false, false, "",
+      trefoil_parameters({radius_parameter(), make_parameter("barrier", 500.0, 50.0, 5000.0, false, false, "",
                                                                       "barrier stiffness k h^2 / T")}),
       element_levels("number of edges", {50, 100, 200}, {50, 100, 200, 400}), std::move(metrics), std::move(gates),
       run);
