@@ -50,6 +50,7 @@ INSTANTIATE_TEST_SUITE_P(
                       UnitsCase{"elastica-contact/soft-wall", kNewtonRoundOff},
                       UnitsCase{"elastica-contact/propped-cantilever/arcs", kNewtonRoundOff},
                       UnitsCase{"elastica/heavy-cantilever/polygon", kNewtonRoundOff},
+                      UnitsCase{"superhelix/clothoid-heavy-cantilever", kNewtonRoundOff},
                       UnitsCase{"superhelix/energy-decay", kStepRoundOff},
                       UnitsCase{"superhelix/clothoid-energy-decay", kStepRoundOff},
                       UnitsCase{"superhelix/spinning-clamp-oracle", kStepRoundOff},

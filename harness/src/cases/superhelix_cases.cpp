@@ -359,10 +359,10 @@ sh::RodModel heavy_cantilever_model(const Parameters& p, double level, double w)
   return model;
 }
 
-// The super-clothoid case's weight per length, from its weight parameter rho S g L^3 / EI.
-double clothoid_heavy_weight(const Parameters& p) {
+// The heavy cantilever's weight parameter w L^3 / EI (w = rho S g per unit length).
+double heavy_weight_parameter(const Parameters& p) {
   const double L = parameter_value(p, "L");
-  return parameter_value(p, "weight") * parameter_value(p, "EI") / (L * L * L);
+  return parameter_value(p, "w") * L * L * L / parameter_value(p, "EI");
 }
 
 LevelOutput run_heavy(const Parameters& p, double level) {
@@ -385,15 +385,16 @@ LevelOutput run_heavy(const Parameters& p, double level) {
 // correction is 5e-13 (2026-11-21). The super-clothoid at N = 64 agrees to 4e-10 (its O(h^4) error).
 const Vec3 kHeavyTipAtWeight3(0.65485121488338932, 0.21774040484668871, -0.57684254917621921);
 
-// The reference tip for any weight: the table above at weight = 3, otherwise the Super-Helix at
-// N = 32 and 64 with one h^2 Richardson step (error 2.9e-9 at weight 3, 670 x below the tip error
-// at N = 8; ~0.1 s; test StoredClothoidHeavyTipMatchesTheLiveExtrapolation).
+// The reference tip for any weight: the table above at w L^3 / EI = 3 (to 1e-13 relative: the default w
+// is 3 EI / L^3 rounded), otherwise the Super-Helix at N = 32 and 64 with one h^2 Richardson step (error
+// 2.9e-9 at weight 3, 670 x below the tip error at N = 8; ~0.1 s; test
+// StoredClothoidHeavyTipMatchesTheLiveExtrapolation).
 Vec3 heavy_tip_reference(const Parameters& p) {
   const double L = parameter_value(p, "L");
-  if (parameter_value(p, "weight") == 3.0) return L * kHeavyTipAtWeight3;
+  if (std::abs(heavy_weight_parameter(p) - 3.0) <= 3e-13) return L * kHeavyTipAtWeight3;
   Vec3 tips[2];
   for (int i = 0; i < 2; ++i) {
-    const sh::RodModel model = heavy_cantilever_model(p, 32.0 * (i + 1), clothoid_heavy_weight(p));
+    const sh::RodModel model = heavy_cantilever_model(p, 32.0 * (i + 1), parameter_value(p, "w"));
     sh::StaticOptions options;
     options.load_steps = 2;
     options.tolerance = 1e-14;
@@ -403,7 +404,7 @@ Vec3 heavy_tip_reference(const Parameters& p) {
 }
 
 LevelOutput run_clothoid_heavy(const Parameters& p, double level) {
-  const sh::RodModel model = heavy_cantilever_model(p, level, clothoid_heavy_weight(p));
+  const sh::RodModel model = heavy_cantilever_model(p, level, parameter_value(p, "w"));
   const auto result = sh::solve_clothoid_static(model, sh::StaticOptions{});
   // H sampled at the nodes (the degrees of freedom): the nodal strains are the L2 projection of the
   // moment, O(h^2) pointwise; at the Gauss stations (the solution struct's default) the strain
@@ -954,16 +955,16 @@ void register_superhelix_cases(Registry& registry) {
     Case c = make_case(
         "superhelix/clothoid-heavy-cantilever", "heavy cantilever on the super-clothoid rod: H(s) and the tip",
         "The naturally curved and twisted heavy cantilever of superhelix/heavy-cantilever (GJ = 0.6 EI, EI2 = 1.4 EI, "
-        "natural strains (0.8, 1.2, -0.5)/L, tilted clamp, gravity rho S g L^3/EI = weight) on the super-clothoid rod "
-        "(continuous, piecewise-affine strains): the Lagrangian has no explicit s, so H is conserved.",
+        "natural strains (0.8, 1.2, -0.5)/L, tilted clamp, weight w = rho S g per unit length, w L^3 / EI = 3 at the "
+        "defaults) on the super-clothoid rod (continuous, piecewise-affine strains): the Lagrangian has no explicit "
+        "s, so H is conserved.",
         "H = n.v + m.u - W - V constant along s (V = -rho S g.r), compact and flattened forms equal; tip: the "
-        "Super-Helix at N = 128, 256, 512 extrapolated (h^2, h^4), error ~1e-12 (weight = 3; otherwise N = 32, 64, "
-        "one h^2 step, ~3e-9)",
+        "Super-Helix at N = 128, 256, 512 extrapolated (h^2, h^4), error ~1e-12 (w L^3 / EI = 3; otherwise N = 32, "
+        "64, one h^2 step, ~3e-9)",
         "Maddocks & Dichmann 1994, J. Elasticity 34:83; Casati & Bertails-Descoubes 2013; PHYSICS.md §1.1, §1.4",
-        // The weights its coarse levels (N = 2 .. 8, issue 17) fit the H spread's order 2 at: [2, 6]
-        // (measured 2026-11-26: 1.5 and below 1.64 .. 1.04, 7 and above 2.54, pre-asymptotic).
-        {unit_length_parameter(), stiffness_parameter(),
-         make_parameter("weight", 3.0, 2.0, 6.0, false, false, "", "rho S g L^3 / EI")},
+        {length_parameter(kDefaultLength), stiffness_parameter(false),
+         make_parameter("w", 3.0 * kDefaultStiffness / std::pow(kDefaultLength, 3), 0.0, 1e12, true, false,
+                        "force/length", "weight per unit length rho S g")},
         elements(levels, {2, 4, 8, 16, 32}),
         {invariant_metric("H_spread", "max |H(s) - mean H| / term scale at the N + 1 nodes", 2.0),
          invariant_metric("H_spread_gauss", "the same at the 2 Gauss points per element (asymptotically O(h^3))"),
@@ -974,6 +975,9 @@ void register_superhelix_cases(Registry& registry) {
          error_metric("tip_z", "L", "(tip z - root z) / L", 4.0),
          diagnostic_metric("newton_iterations", "Newton iterations")},
         gates, run_clothoid_heavy);
+    // The weights its coarse levels (N = 2 .. 8, issue 17) fit the H spread's order 2 at: w L^3 / EI in [2, 6]
+    // (measured 2026-11-26: 1.5 and below 1.64 .. 1.04, 7 and above 2.54, pre-asymptotic).
+    cases::require(c, cases::weight_window(2.0, 6.0, "where the coarse levels fit the H spread's order 2"));
     c.info.method =
         "Super-clothoid (Casati & Bertails-Descoubes 2013; ALGORITHMS.md §2): nodal twist and curvatures, affine per "
         "element, series frame and centreline; statics by the shared Newton; the solution struct of "
