@@ -57,6 +57,15 @@ class AugmentedSystem {
   const std::vector<Pair>& active() const noexcept { return active_; }
   std::size_t size() const noexcept { return size_; }
 
+  // Each residual component's scale in the problem's own units (detail::residual_scales; a gap row is a
+  // length, L), so that convergence does not depend on L and EI.
+  VectorXd residual_scales() const {
+    const VectorXd kkt = detail::residual_scales(lag_);
+    VectorXd scale = VectorXd::Constant(idx(size_), lag_.problem().length);
+    for (std::size_t k = 0; k < map_.size(); ++k) scale[idx(map_[k])] = kkt[idx(k)];
+    return scale;
+  }
+
   VectorXd pack(const VectorXd& z, const std::vector<double>& lambda) const {
     VectorXd w(static_cast<Eigen::Index>(size_));
     for (std::size_t k = 0; k < map_.size(); ++k) w[idx(map_[k])] = z[idx(k)];
@@ -130,15 +139,18 @@ class AugmentedSystem {
   std::size_t size_ = 0;
 };
 
-// Newton on the augmented KKT system with a fixed active set (same safeguards as detail::newton).
+// Newton on the augmented KKT system with a fixed active set (same safeguards and the same scaled residual
+// and merit as detail::newton: ||D f||, D = 1 / residual scale).
 void newton_active(const AugmentedSystem& sys, VectorXd& z, std::vector<double>& lambda,
                    const SolverOptions& options, detail::NewtonState& state,
                    const std::string& method) {
   VectorXd w = sys.pack(z, lambda);
   VectorXd scratch = z;
+  const VectorXd scale = sys.residual_scales();
+  const auto scaled = [&scale](const VectorXd& f) { return f.cwiseQuotient(scale).eval(); };
   for (std::size_t it = 0;; ++it) {
     const VectorXd f = sys.residual(w, scratch);
-    const double r = f.lpNorm<Eigen::Infinity>();
+    const double r = scaled(f).lpNorm<Eigen::Infinity>();
     state.residual = r;
     check_time_budget(method, state.iterations, r);
     if (!std::isfinite(r))
@@ -157,14 +169,14 @@ void newton_active(const AugmentedSystem& sys, VectorXd& z, std::vector<double>&
     if (!dw.allFinite()) throw SolverError(method, "Newton step is non-finite", state.iterations, r);
     if (dw.lpNorm<Eigen::Infinity>() <= 64.0 * kEps * (1.0 + w.lpNorm<Eigen::Infinity>())) {
       w += dw;
-      state.residual = sys.residual(w, scratch).lpNorm<Eigen::Infinity>();
+      state.residual = scaled(sys.residual(w, scratch)).lpNorm<Eigen::Infinity>();
       break;
     }
-    const double merit = f.norm();
+    const double merit = scaled(f).norm();
     double alpha = 1.0;
     for (;;) {
       const VectorXd trial = w + alpha * dw;
-      const double m = sys.residual(trial, scratch).norm();
+      const double m = scaled(sys.residual(trial, scratch)).norm();
       if (std::isfinite(m) && m <= (1.0 - kArmijo * alpha) * merit) {
         w = trial;
         break;
@@ -188,10 +200,11 @@ Eigen::Vector2d node_position(const DiscreteLagrangian& lag, const VectorXd& z, 
   return {z[static_cast<Eigen::Index>(lag.x(i))], z[static_cast<Eigen::Index>(lag.y(i))]};
 }
 
+// Round-off of a gap: 64 eps of the lengths it is computed from (L and the largest coordinate).
 double gap_tolerance(const DiscreteLagrangian& lag, const VectorXd& z) {
-  double scale = 1.0;
+  double scale = lag.problem().length;
   for (std::size_t i = 0; i <= lag.elements(); ++i)
-    scale = std::max(scale, 1.0 + node_position(lag, z, i).cwiseAbs().maxCoeff());
+    scale = std::max(scale, lag.problem().length + node_position(lag, z, i).cwiseAbs().maxCoeff());
   return 64.0 * kEps * scale;
 }
 
@@ -222,6 +235,8 @@ ContactSolution solve_static_contact(const Problem& problem, const Discretisatio
     validate(obstacles[o], "obstacles[" + std::to_string(o) + "]");
   DiscreteLagrangian lag(problem, discretisation);
   const std::size_t n = lag.elements();
+  // A node's contact force in the problem's units, EI / L^2 (the active set drops forces below -tolerance of it).
+  const double force_unit = lag.node_stiffness(0) / (problem.length * problem.length);
   const bool lcp = contact.method == ContactMethod::NewtonLcp;
   const std::string method =
       detail::method_name(discretisation.scheme) + "-contact" +
@@ -282,7 +297,7 @@ ContactSolution solve_static_contact(const Problem& problem, const Discretisatio
       // Active-set update (primal-dual): drop negative multipliers, add penetrating pairs.
       std::vector<Pair> next;
       for (std::size_t p = 0; p < active.size(); ++p)
-        if (lambda[p] >= -options.tolerance) next.push_back(active[p]);
+        if (lambda[p] >= -options.tolerance * force_unit) next.push_back(active[p]);
       // Per obstacle, each run of consecutive penetrating inactive nodes contributes its deepest
       // node only: adding a whole run at once over-constrains the rod (a straight rod pushed
       // through a disk cannot follow its arc with every node), and the run's other nodes come in

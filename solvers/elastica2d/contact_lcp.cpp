@@ -46,12 +46,25 @@ VectorXd force_residual(const DiscreteLagrangian& lag, const std::vector<Obstacl
   return f;
 }
 
-// ||Phi||_inf, Phi = (F, min(lambda, g)): the convergence measure.
+// The problem's own units (detail::residual_scales): the KKT residual's scales, a contact force's EI / L^2 and a
+// gap's L, so that convergence does not depend on L and EI.
+struct Units {
+  VectorXd residual;
+  double force = 1.0, length = 1.0;
+  explicit Units(const DiscreteLagrangian& lag)
+      : residual(detail::residual_scales(lag)),
+        force(lag.node_stiffness(0) / (lag.problem().length * lag.problem().length)),
+        length(lag.problem().length) {}
+};
+
+// ||Phi||_inf, Phi = (F, min(lambda, g)) each in its units: the convergence measure.
 double natural_residual(const DiscreteLagrangian& lag, const std::vector<Obstacle>& obstacles,
-                        const std::vector<ContactPair>& pairs, const VectorXd& z, const VectorXd& lambda) {
-  double r = force_residual(lag, obstacles, pairs, z, lambda, {}, 0.0).lpNorm<Eigen::Infinity>();
+                        const std::vector<ContactPair>& pairs, const VectorXd& z, const VectorXd& lambda,
+                        const Units& units) {
+  double r = force_residual(lag, obstacles, pairs, z, lambda, {}, 0.0).cwiseQuotient(units.residual).lpNorm<Eigen::Infinity>();
   for (std::size_t p = 0; p < pairs.size(); ++p)
-    r = std::max(r, std::abs(std::min(lambda[idx(p)], gap(obstacles[pairs[p].obstacle], position(lag, z, pairs[p].node)))));
+    r = std::max(r, std::abs(std::min(lambda[idx(p)] / units.force,
+                                      gap(obstacles[pairs[p].obstacle], position(lag, z, pairs[p].node)) / units.length)));
   return r;
 }
 
@@ -59,10 +72,11 @@ double natural_residual(const DiscreteLagrangian& lag, const std::vector<Obstacl
 // otherwise). The step is its exact Newton direction, hence a descent direction of this merit.
 double selected_merit(const DiscreteLagrangian& lag, const std::vector<Obstacle>& obstacles,
                       const std::vector<ContactPair>& pairs, const VectorXd& z, const VectorXd& lambda,
-                      const Flags& held, double rho, const Flags& selected) {
-  double sum = force_residual(lag, obstacles, pairs, z, lambda, held, rho).squaredNorm();
+                      const Flags& held, double rho, const Flags& selected, const Units& units) {
+  double sum = force_residual(lag, obstacles, pairs, z, lambda, held, rho).cwiseQuotient(units.residual).squaredNorm();
   for (std::size_t p = 0; p < pairs.size(); ++p) {
-    const double c = selected[p] ? gap(obstacles[pairs[p].obstacle], position(lag, z, pairs[p].node)) : lambda[idx(p)];
+    const double c = selected[p] ? gap(obstacles[pairs[p].obstacle], position(lag, z, pairs[p].node)) / units.length
+                                 : lambda[idx(p)] / units.force;
     sum += c * c;
   }
   return std::sqrt(sum);
@@ -134,11 +148,12 @@ void newton_lcp(const DiscreteLagrangian& lag, const std::vector<Obstacle>& obst
   const double length = lag.problem().length;
   const double rho_start = contact.stabilisation * ei / (length * length * length);
 
+  const Units units(lag);
   std::vector<std::size_t> candidates;
   std::vector<Eigen::Vector2d> normal;  // grad g of each candidate at the iterate
   Flags held(pairs.size()), selected(pairs.size());
   for (std::size_t it = 0;; ++it) {
-    const double r = natural_residual(lag, obstacles, pairs, z, lambda);
+    const double r = natural_residual(lag, obstacles, pairs, z, lambda, units);
     state.residual = r;
     check_time_budget(method, state.iterations, r);
     if (!std::isfinite(r))
@@ -239,16 +254,16 @@ void newton_lcp(const DiscreteLagrangian& lag, const std::vector<Obstacle>& obst
     if (dz.lpNorm<Eigen::Infinity>() <= 64.0 * kEps * (1.0 + z.lpNorm<Eigen::Infinity>())) {
       z += dz;
       lambda = target;
-      state.residual = natural_residual(lag, obstacles, pairs, z, lambda);
+      state.residual = natural_residual(lag, obstacles, pairs, z, lambda, units);
       return;
     }
     const VectorXd dlambda = target - lambda;
-    const double merit = selected_merit(lag, obstacles, pairs, z, lambda, held, rho, selected);
+    const double merit = selected_merit(lag, obstacles, pairs, z, lambda, held, rho, selected, units);
     double alpha = 1.0;
     for (;;) {
       const VectorXd zt = z + alpha * dz;
       const VectorXd lt = alpha == 1.0 ? target : VectorXd(lambda + alpha * dlambda);
-      const double mt = selected_merit(lag, obstacles, pairs, zt, lt, held, rho, selected);
+      const double mt = selected_merit(lag, obstacles, pairs, zt, lt, held, rho, selected, units);
       if (std::isfinite(mt) && mt <= (1.0 - kArmijo * alpha) * merit) {
         z = zt;
         lambda = lt;

@@ -45,7 +45,8 @@ PlanarRodSolution solve_soft_walls(const Problem& problem, const Discretisation&
     throw InputError("potential", "invalid parameter 'potential': solve_soft_walls sets the potential itself; "
                                   "pass a problem without one");
   // First stage: load/displacement stepping from the guess at the softer of b and b_start.
-  double b = std::max(softness, soft.start_softness);
+  validate(problem);
+  double b = std::max(softness, soft.start_softness * bending_stiffness_at(problem, 0.0) / problem.length);
   Problem staged = problem;
   staged.potential = soft_walls(gap, b);
   DiscreteLagrangian first(staged, discretisation);

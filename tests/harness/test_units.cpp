@@ -10,6 +10,7 @@
 
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "case_test_support.hpp"
@@ -62,6 +63,27 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<UnitsCase>& param_info) {
       return rodvv::testing::test_name_of_case(param_info.param.name);
     });
+
+// Far from the defaults' units: stiffnesses 1e11 and 1e-6 times theirs (lengths x 10, masses x 1e8; lengths x 0.1,
+// masses x 1e-3). The planar contact solvers measured their Newton residual in absolute units until 2026-11-28
+// and failed here ("line search failed with contact rows", residual 9e-4 at EI = 1e12); the soft wall started
+// its continuation at an absolute softness.
+class ExtremeUnits : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ExtremeUnits, SameMetricsFarFromTheDefaultUnits) {
+  const std::vector<std::string> round_off{"penetration", "newton_iterations", "P_vs_walls", "flat_offset",
+                                           "P_vs_active_set", "lcp_residual", "lcp_pivots", "lcp_size"};
+  for (const auto& [length, mass] : {std::pair{10.0, 1e8}, std::pair{0.1, 1e-3}})
+    expect_metrics_free_of_units(named_case(GetParam()), length, mass, 1.0, 1e-8, 1.0, round_off);
+}
+
+INSTANTIATE_TEST_SUITE_P(PlanarContact, ExtremeUnits,
+                         ::testing::Values("elastica-contact/cavity-point/polygon", "elastica-contact/cavity-line/arcs",
+                                           "elastica-contact/cavity-point/polygon-lcp",
+                                           "elastica-contact/cavity-point/polygon-pgs", "elastica-contact/soft-wall"),
+                         [](const ::testing::TestParamInfo<std::string>& param_info) {
+                           return rodvv::testing::test_name_of_case(param_info.param);
+                         });
 
 TEST(UnitFactor, ParsesTheUnitTexts) {
   using rodvv::testing::unit_factor;

@@ -23,7 +23,9 @@ namespace rodvv::solvers::elastica2d {
 Potential soft_walls(double gap, double softness);
 
 struct SoftWallOptions {
-  double start_softness = 1e-4;   // b of the first (load-stepped) solve, > 0
+  // b of the first (load-stepped) solve in units of EI(0) / L (so that the continuation does not depend on the
+  // units: 1e-4 is a wall the column barely touches at any L and EI), > 0
+  double start_softness = 1e-4;
   double softness_ratio = 0.5;    // b_{k+1} = ratio * b_k, in (0, 1)
 };
 
