@@ -76,6 +76,15 @@ Window helix_turns_window(double low, double high, std::string why) {
           }};
 }
 
+Parameters section_parameters(double rhoS, const Vec3& stiffness) {
+  return {make_parameter("rhoS", rhoS, 0.0, 1e12, true, false, "mass/length", "line density"),
+          make_parameter("GJ", stiffness.x(), 0.0, 1e12, true, false, "force length^2", "twisting stiffness"),
+          make_parameter("EI1", stiffness.y(), 0.0, 1e12, true, false, "force length^2",
+                         "bending stiffness about the first material axis"),
+          make_parameter("EI2", stiffness.z(), 0.0, 1e12, true, false, "force length^2",
+                         "bending stiffness about the second material axis")};
+}
+
 double bending_time(const Parameters& p, const std::string& stiffness) {
   const double L = parameter_value(p, "L");
   return L * L * std::sqrt(parameter_value(p, "rhoS") / parameter_value(p, stiffness));

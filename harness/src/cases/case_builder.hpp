@@ -64,6 +64,10 @@ Window load_window(std::string length, double low, double high, std::string why)
 // naming w otherwise.
 Window weight_window(double low, double high, std::string why);
 
+// A rod's line density rhoS and stiffnesses GJ, EI1, EI2 (stiffness = (GJ, EI1, EI2)) as parameters, each in
+// (0, 1e12].
+Parameters section_parameters(double rhoS, const Vec3& stiffness);
+
 // Dynamic cases in the user's units: the rod's bending time tau = L^2 sqrt(rhoS / EI) from the parameters L,
 // rhoS and the named bending stiffness. Their time levels are dt / tau and their start rates are given in
 // units of tau, so that the resolution and the measured windows do not depend on the scales.

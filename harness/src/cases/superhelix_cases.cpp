@@ -627,13 +627,6 @@ void set_section(sh::RodModel& model, const Parameters& p) {
   model.stiffness = Vec3(parameter_value(p, "GJ"), parameter_value(p, "EI1"), parameter_value(p, "EI2"));
 }
 
-Parameters section_parameters(double rhoS, const Vec3& stiffness) {
-  return {make_parameter("rhoS", rhoS, 0.0, 1e12, true, false, "mass/length", "line density"),
-          make_parameter("GJ", stiffness.x(), 0.0, 1e12, true, false, "force length^2", "twisting stiffness"),
-          make_parameter("EI1", stiffness.y(), 0.0, 1e12, true, false, "force length^2", "bending stiffness about n1"),
-          make_parameter("EI2", stiffness.z(), 0.0, 1e12, true, false, "force length^2", "bending stiffness about n2")};
-}
-
 // 100 steps of 0.01 tau (tau = L^2 sqrt(rhoS / EI1)): at rest every force vanishes, whatever the step.
 LevelOutput run_curl(const Parameters& p, double level) {
   sh::RodModel model;
@@ -750,13 +743,11 @@ void superhelix_cases::require_energy_release_windows(Case& c, double max_swing,
 }
 
 Parameters superhelix_cases::energy_release_parameters() {
-  return {length_parameter(0.7),
-          make_parameter("rhoS", 0.3, 0.0, 1e12, true, false, "mass/length", "line density"),
-          make_parameter("GJ", 0.03, 0.0, 1e12, true, false, "force length^2", "twisting stiffness"),
-          make_parameter("EI1", 0.05, 0.0, 1e12, true, false, "force length^2", "bending stiffness about n1"),
-          make_parameter("EI2", 0.08, 0.0, 1e12, true, false, "force length^2", "bending stiffness about n2"),
-          make_parameter("g", 2.0, 0.0, 1e6, true, false, "length/time^2", "gravity"),
-          make_parameter("t_end", 0.25, 0.0, 1e6, true, false, "time", "horizon")};
+  Parameters p{length_parameter(0.7)};
+  for (auto& q : cases::section_parameters(0.3, Vec3(0.03, 0.05, 0.08))) p.push_back(q);
+  p.push_back(make_parameter("g", 2.0, 0.0, 1e6, true, false, "length/time^2", "gravity"));
+  p.push_back(make_parameter("t_end", 0.25, 0.0, 1e6, true, false, "time", "horizon"));
+  return p;
 }
 
 void superhelix_cases::EnergyLedger::record(double time, double energy) {
@@ -1144,7 +1135,7 @@ void register_superhelix_cases(Registry& registry) {
         "q(t) = q0, qdot(t) = 0 exactly", "ALGORITHMS.md §1.7 (rest state)",
         [] {
           Parameters p{unit_length_parameter()};
-          for (auto& q : section_parameters(0.8, Vec3(0.5, 1.3, 2.1))) p.push_back(q);
+          for (auto& q : cases::section_parameters(0.8, Vec3(0.5, 1.3, 2.1))) p.push_back(q);
           return p;
         }(),
         elements({4, 8, 16}, {4, 8, 16, 32, 64}),
@@ -1170,7 +1161,7 @@ void register_superhelix_cases(Registry& registry) {
         // L = 200, diverges at 300 (issue 14, class 5: the range a run honours).
         [] {
           Parameters p{make_parameter("L", 1.0, 0.0, 200.0, true, false, "length", "rod length")};
-          for (auto& q : section_parameters(0.02, Vec3(0.05, 0.1, 0.13))) p.push_back(q);
+          for (auto& q : cases::section_parameters(0.02, Vec3(0.05, 0.1, 0.13))) p.push_back(q);
           // g <= 1000 with the fixed h = 1e-3 (1e4 diverges in a few steps: explicit velocity terms; measured
           // 2026-11-28; every other parameter passes at the ends of its range, one at a time).
           p.push_back(make_parameter("g", 9.81, 0.0, 1e3, false, false, "length/time^2", "gravity"));

@@ -178,16 +178,18 @@ void add_energy_in_time(Registry& registry) {
        "discrete elastic rod, implicit Euler and implicit midpoint (solvers/rod3d/dynamics.hpp): Newton on positions, "
        "angles and multipliers in the chart of the previous step, exact banded Jacobian, banded LU; reference frames "
        "carried by time-parallel transport"},
-      {integer_parameter("N", 8.0, 2.0, 64.0, "number of edges"),
-       make_parameter("L", 1.1, 0.0, 1e6, true, false, "length", "rod length"),
-       make_parameter("rhoS", 0.7, 0.0, 1e12, true, false, "mass/length", "line density"),
-       make_parameter("rhoI0", 0.1, 0.0, 1e12, true, false, "mass length", "polar mass moment per unit length"),
-       make_parameter("GJ", 0.6, 0.0, 1e12, true, false, "force length^2", "twisting stiffness"),
-       make_parameter("EI1", 0.9, 0.0, 1e12, true, false, "force length^2", "bending stiffness about m1"),
-       make_parameter("EI2", 1.6, 0.0, 1e12, true, false, "force length^2", "bending stiffness about m2"),
-       make_parameter("g", 3.0, 0.0, 1e6, true, false, "length/time^2", "gravity"),
-       make_parameter("twist", 1.0, -3.0, 3.0, false, false, "rad", "initial twist phi of the tip edge"),
-       make_parameter("t_end", 1.0, 0.0, 1e6, true, false, "time", "horizon")},
+      [] {
+        Parameters p{integer_parameter("N", 8.0, 2.0, 64.0, "number of edges"),
+                     make_parameter("L", 1.1, 0.0, 1e6, true, false, "length", "rod length")};
+        for (auto& q : section_parameters(0.7, Vec3(0.6, 0.9, 1.6))) p.push_back(q);
+        for (auto& q : {make_parameter("rhoI0", 0.1, 0.0, 1e12, true, false, "mass length",
+                                       "polar mass moment per unit length"),
+                        make_parameter("g", 3.0, 0.0, 1e6, true, false, "length/time^2", "gravity"),
+                        make_parameter("twist", 1.0, -3.0, 3.0, false, false, "rad", "initial twist phi of the tip edge"),
+                        make_parameter("t_end", 1.0, 0.0, 1e6, true, false, "time", "horizon")})
+          p.push_back(q);
+        return p;
+      }(),
       {"dt/tau", "time step over tau = L^2 sqrt(rho S / EI1)", ResolutionScale::StepSize, {1e-2, 5e-3, 2.5e-3},
        {2e-2, 1e-2, 5e-3, 2.5e-3, 1.25e-3}},
       std::move(metrics), std::move(gates), run);
