@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <Eigen/Geometry>
@@ -19,6 +20,13 @@ namespace {
 std::string interval_text(double low, double high) {
   return std::isinf(high) ? fmt::format(">= {:g}", low) : fmt::format("in [{:g}, {:g}]", low, high);
 }
+
+// v in [low, high] up to the rounding of a group computed from typed values (4 eps relative): a user who types the
+// window's end (GJ = 0.01 with EI1 = 0.05, GJ / EI1 = 0.19999999999999998) is inside it. NaN is outside.
+bool inside(double v, double low, double high) {
+  constexpr double kSlack = 4.0 * std::numeric_limits<double>::epsilon();
+  return v >= low - kSlack * std::abs(low) && v <= high + kSlack * std::abs(high);
+}
 }  // namespace
 
 void require(Case& c, Window window) { require_window(c, std::move(window.statement), std::move(window.check)); }
@@ -27,7 +35,7 @@ Window ratio_window(std::string numerator, std::string denominator, double low, 
   std::string statement = fmt::format("{} / {} {} ({})", numerator, denominator, interval_text(low, high), why);
   return {statement, [=](const Parameters& p) {
             const double ratio = parameter_value(p, numerator) / parameter_value(p, denominator);
-            if (!(ratio >= low && ratio <= high))
+            if (!inside(ratio, low, high))
               throw InputError(numerator, fmt::format("invalid parameters: {} / {} = {} must be {} ({})", numerator,
                                                       denominator, format_value(ratio), interval_text(low, high), why));
           }};
@@ -38,7 +46,7 @@ Window load_window(std::string length, double low, double high, std::string why)
   return {statement, [=](const Parameters& p) {
             const double arm = parameter_value(p, length), EI = parameter_value(p, "EI"), P = parameter_value(p, "P");
             const double load = P * arm * arm / EI;
-            if (!(load >= low && load <= high))
+            if (!inside(load, low, high))
               throw InputError("P", fmt::format("invalid parameter 'P' = {}: the load P {}^2 / EI = {} ({} = {}, EI = "
                                                 "{}) must be {} ({})",
                                                 format_value(P), length, format_value(load), length, format_value(arm),
@@ -51,7 +59,7 @@ Window weight_window(double low, double high, std::string why) {
   return {statement, [=](const Parameters& p) {
             const double w = parameter_value(p, "w"), L = parameter_value(p, "L"), EI = parameter_value(p, "EI");
             const double weight = w * L * L * L / EI;
-            if (!(weight >= low && weight <= high))
+            if (!inside(weight, low, high))
               throw InputError("w", fmt::format("invalid parameter 'w' = {}: the weight w L^3 / EI = {} (L = {}, EI = {}) "
                                                 "must be {} ({})",
                                                 format_value(w), format_value(weight), format_value(L),
@@ -69,7 +77,7 @@ Window helix_turns_window(double low, double high, std::string why) {
       fmt::format("helix turns L sin(pitch_angle) / (2 pi radius) {} ({})", interval_text(low, high), why);
   return {statement, [=](const Parameters& p) {
             const double turns = helix_turns(p);
-            if (!(turns >= low && turns <= high))
+            if (!inside(turns, low, high))
               throw InputError("L", fmt::format("invalid parameters: the helix makes L sin(pitch_angle) / (2 pi radius) "
                                                 "= {} turns, which must be {} ({})",
                                                 format_value(turns), interval_text(low, high), why));
@@ -107,7 +115,7 @@ Window horizon_window(std::string stiffness, double low, double high, std::strin
                                       stiffness, why);
   return {statement, [=](const Parameters& p) {
             const double tau = bending_time(p, stiffness), t_end = parameter_value(p, "t_end");
-            if (!(t_end / tau >= low && t_end / tau <= high))
+            if (!inside(t_end / tau, low, high))
               throw InputError("t_end", fmt::format("invalid parameter 't_end' = {}: t_end / tau = {} (tau = L^2 sqrt("
                                                     "rhoS / {}) = {}) must be {} ({})",
                                                     format_value(t_end), format_value(t_end / tau), stiffness,
@@ -120,7 +128,7 @@ Window gravity_window(std::string stiffness, double low, double high, std::strin
   return {statement, [=](const Parameters& p) {
             const double g = parameter_value(p, "g"), L = parameter_value(p, "L");
             const double weight = g * parameter_value(p, "rhoS") * L * L * L / parameter_value(p, stiffness);
-            if (!(weight >= low && weight <= high))
+            if (!inside(weight, low, high))
               throw InputError("g", fmt::format("invalid parameter 'g' = {}: g rhoS L^3 / {} = {} must be {} ({})",
                                                 format_value(g), stiffness, format_value(weight),
                                                 interval_text(low, high), why));
@@ -132,7 +140,7 @@ Window group_window(std::string parameter, std::string group, std::function<doub
   std::string statement = fmt::format("{} {} ({})", group, interval_text(low, high), why);
   return {statement, [=](const Parameters& p) {
             const double v = value(p);
-            if (!(v >= low && v <= high))
+            if (!inside(v, low, high))
               throw InputError(parameter, fmt::format("invalid parameter '{}' = {}: {} = {} must be {} ({})", parameter,
                                                       format_value(parameter_value(p, parameter)), group,
                                                       format_value(v), interval_text(low, high), why));
