@@ -9,9 +9,10 @@
 //     - sum_{(i,o) in A} lambda_io g_o(r_i),
 // i.e. one equality row g_o(r_i) = 0 per active pair and the nodal force lambda_io grad g_o(r_i) on
 // the rod; Newton (analytic Hessian, -lambda grad^2 g for curved obstacles, the same backtracking
-// line search) solves it to the tolerance. Then A is updated: pairs with lambda < -tolerance
-// leave; of every run of consecutive inactive nodes with g < -gap tolerance (gap tolerance =
-// 64 eps (1 + max|r|), i.e. round-off) the deepest enters (adding a whole run at once can
+// line search) solves it to the tolerance, on the residual in the problem's units as solve_static does
+// (detail::residual_scales; a gap row over L), so that it converges alike at any L and EI. Then A is updated:
+// pairs with lambda < -tolerance EI/L^2 leave; of every run of consecutive inactive nodes with g < -gap
+// tolerance (gap tolerance = 64 eps (L + max|r|), i.e. round-off) the deepest enters (adding a whole run at once can
 // over-constrain the rod); the solve repeats until no pair changes. Point contacts (one active node) and
 // line contacts (a run of active nodes; inside it lambda is zero to round-off, PHYSICS.md §1.2) come
 // out of the same iteration. Each multiplier row is inserted right after its node's (x, y) in the

@@ -49,8 +49,9 @@
 // along (z + a dz, lambda + a (lambda+ - lambda)), Armijo 1e-4, a halved down to 2^-30, as the
 // other Newton loops of this folder (the natural map min(lambda, g) mixes a force and a length and
 // is not decreased by a contact-engaging step).
-// Convergence: ||Phi||_inf <= options.tolerance, Phi = (F, min(lambda, g)) unpenalised (the
-// active-set path's tolerance on its KKT residual), or a step at round-off (||dz||_inf <= 64 eps (1 +
+// Convergence: ||Phi||_inf <= options.tolerance, Phi = (F, min(lambda, g)) unpenalised and in the problem's
+// units (F over detail::residual_scales, lambda over EI/L^2, g over L: the active-set path's tolerance on its
+// KKT residual), or a step at round-off (||dz||_inf <= 64 eps (1 +
 // ||z||_inf)). Candidate pairs: gap <= contact.candidate_distance at the iterate, plus every
 // pair with lambda > 0. Failure: SolverError (Newton iterations, last ||Phi||_inf) when the LCP
 // fails (the message carries the LCP solver's), the KKT matrix is singular, the line search fails
