@@ -20,14 +20,12 @@ namespace {
 std::string interval_text(double low, double high) {
   return std::isinf(high) ? fmt::format(">= {:g}", low) : fmt::format("in [{:g}, {:g}]", low, high);
 }
+}  // namespace
 
-// v in [low, high] up to the rounding of a group computed from typed values (4 eps relative): a user who types the
-// window's end (GJ = 0.01 with EI1 = 0.05, GJ / EI1 = 0.19999999999999998) is inside it. NaN is outside.
 bool inside(double v, double low, double high) {
   constexpr double kSlack = 4.0 * std::numeric_limits<double>::epsilon();
   return v >= low - kSlack * std::abs(low) && v <= high + kSlack * std::abs(high);
 }
-}  // namespace
 
 void require(Case& c, Window window) { require_window(c, std::move(window.statement), std::move(window.check)); }
 

@@ -64,6 +64,10 @@ Window load_window(std::string length, double low, double high, std::string why)
 // naming w otherwise.
 Window weight_window(double low, double high, std::string why);
 
+// v in [low, high] up to the rounding of a group computed from typed values (4 eps relative): a user who types a
+// window's end (GJ = 0.01 with EI1 = 0.05, GJ / EI1 = 0.19999999999999998) is inside it. NaN is outside.
+bool inside(double v, double low, double high);
+
 // A rod's line density rhoS and stiffnesses GJ, EI1, EI2 (stiffness = (GJ, EI1, EI2)) as parameters, each in
 // (0, 1e12].
 Parameters section_parameters(double rhoS, const Vec3& stiffness);

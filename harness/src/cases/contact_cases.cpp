@@ -147,7 +147,7 @@ constexpr double kMinWallGap = 1e-3, kMaxWallGap = 0.3;
 
 void check_wall_gap(const Parameters& p) {
   const Column col = column_of(p);
-  if (!(col.a_hat() >= kMinWallGap && col.a_hat() <= kMaxWallGap))
+  if (!cases::inside(col.a_hat(), kMinWallGap, kMaxWallGap))
     throw InputError("wall_gap", fmt::format("invalid parameter 'wall_gap' = {}: the cavity cases honour {} <= "
                                              "wall_gap / L <= {} ({:.6g} .. {:.6g} at L = {})",
                                              format_value(col.a), kMinWallGap, kMaxWallGap, kMinWallGap * col.L,
@@ -258,7 +258,7 @@ PointWindow point_window(CondensedLcp lcp, Ceiling ceiling) {
 void check_point_window(const PointWindow& w, const Parameters& p) {
   const Column col = column_of(p);
   const double d = col.d_hat(), a = col.a_hat();
-  if (!(a >= w.min_wall_gap && a <= w.max_wall_gap))
+  if (!cases::inside(a, w.min_wall_gap, w.max_wall_gap))
     throw InputError("wall_gap", fmt::format("invalid parameter 'wall_gap' = {}: this case is measured to converge "
                                              "for {} <= wall_gap / L <= {} ({:.6g} .. {:.6g} at L = {}; beyond, its "
                                              "Newton stops)",
@@ -266,7 +266,7 @@ void check_point_window(const PointWindow& w, const Parameters& p) {
                                              w.min_wall_gap * col.L, w.max_wall_gap * col.L, format_value(col.L)));
   const auto [touch, transition] = regime_interval(Regime::Point, a);
   const double lo = touch + w.low * (transition - touch), hi = touch + w.high * (transition - touch);
-  if (!(d >= lo && d <= hi))
+  if (!cases::inside(d, lo, hi))
     throw InputError("shortening", fmt::format("invalid parameter 'shortening' = {}: at wall_gap = {} and L = {} this "
                                                "case honours {:.6g} <= shortening <= {:.6g} ({:.6g} .. {:.6g} L), the "
                                                "fractions {} .. {} of the point regime from the touch to the "
@@ -361,7 +361,7 @@ LevelOutput run_cavity_level(e2d::Scheme scheme, Regime regime, const Parameters
     out.metrics["flat_length"] = error_sample((sr / fr - sl / fl) / L, r.flat_length / L);
     // The flat: the nodes from the first to the last contact with the wall the middle of the run holds. In
     // the continuum it carries no distributed force (kappa = 0 there, so m' = 0 and the shear vanishes),
-    // and its inner nodes may be inactive (lambda = 0), at any g >= -64 eps (1 + max|r|) ~ 3e-14 (an
+    // and its inner nodes may be inactive (lambda = 0), at any g >= -64 eps (L + max|r|) ~ 5e-14 (an
     // inactive node of a polygon's flat is in equilibrium with straight edges: on the wall to round-off).
     // Measured as each vertex's offset from the chord of its neighbours, |kappa_i| h^2 / 2 (kappa_i the
     // turning angle / h), a length like the gaps (in L): a bound on kappa alone would grow as 1 / h^2 (a sag
@@ -404,9 +404,9 @@ void add_cavity_gates(Case& c, e2d::Scheme scheme, Regime regime) {
   const bool arcs = scheme == e2d::Scheme::Arcs;
   const std::string second = "smooth solution functional: both discretisations are second order in h = L/N";
   // Penetration: a contact row holds g = 0 to the Newton tolerance; inactive nodes are accepted
-  // down to g = -64 eps (1 + max|r|) ~ 3e-14: bound 1e-13 at every level.
+  // down to g = -64 eps (L + max|r|) ~ 5e-14 (2.5e-14 L at the defaults): bound 1e-13 at every level.
   c.gates.push_back(upper_bound_gate("penetration", 1e-13, GateScope::AllLevels,
-                                     "never beyond round-off: 64 eps (1 + max|r|) < 1e-13"));
+                                     "never beyond round-off: 64 eps (L + max|r|) / L < 1e-13"));
   if (regime == Regime::Free) {
     order_and_bound(c, "P", 2.0, 1.2512e-4, second);
     order_and_bound(c, "H_mean", 2.0, arcs ? 1.2989e-4 : 1.2007e-4, second);
@@ -723,9 +723,9 @@ Case propped_case(e2d::Scheme scheme) {
     c.gates.push_back(measured_bound(metric, at64, 1.0 / 64, 2.0));
   }
   c.run_level = [scheme](const Parameters& p, double level) { return run_propped_level(scheme, p, level); };
-  // The top measured at L = EI = 1 before L and EI were parameters (2026-11-21). The bottom (2026-11-28): the
-  // prop acts once the tip's sag w L^4 / 8 EI exceeds the contact's round-off 64 eps (L + |r|); at w L^3 / EI =
-  // 1.07e-10 no level touches it (R = 0, order 0), at 1.07e-9 every gate passes; ten times that.
+  // The top measured at L = EI = 1 before L and EI were parameters (2026-11-21). The bottom (2026-11-28): at
+  // w L^3 / EI = 1.07e-10 the load is at the solver's tolerance and no level touches the prop (R = 0, order 0);
+  // at 1.07e-9 every gate passes; the window starts ten times above (1e-8 passes the extended levels too).
   cases::require(c, cases::weight_window(1e-8, 1e-2, "where the tip's sag is far above round-off and the "
                                                      "small-deflection reference's (w L^3 / EI)^2 stays below the "
                                                      "levels' discretisation error"));
