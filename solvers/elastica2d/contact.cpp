@@ -202,10 +202,9 @@ Eigen::Vector2d node_position(const DiscreteLagrangian& lag, const VectorXd& z, 
 
 // Round-off of a gap: 64 eps of the lengths it is computed from (L and the largest coordinate).
 double gap_tolerance(const DiscreteLagrangian& lag, const VectorXd& z) {
-  double scale = lag.problem().length;
-  for (std::size_t i = 0; i <= lag.elements(); ++i)
-    scale = std::max(scale, lag.problem().length + node_position(lag, z, i).cwiseAbs().maxCoeff());
-  return 64.0 * kEps * scale;
+  double largest = 0.0;
+  for (std::size_t i = 0; i <= lag.elements(); ++i) largest = std::max(largest, node_position(lag, z, i).cwiseAbs().maxCoeff());
+  return 64.0 * kEps * (lag.problem().length + largest);
 }
 
 }  // namespace

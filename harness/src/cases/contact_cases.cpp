@@ -141,6 +141,24 @@ Column column_of(const Parameters& p) {
           parameter_value(p, "wall_gap")};
 }
 
+// The pinned-pinned column with its end moved in by d (the cavity cases and the soft wall).
+e2d::Problem column_problem(const Column& col) {
+  e2d::Problem problem;
+  problem.length = col.L;
+  problem.bending_stiffness = [EI = col.EI](double) { return EI; };
+  problem.start.support = e2d::Support::Pinned;
+  problem.end.support = e2d::Support::Pinned;
+  problem.end.x = col.L - col.d;
+  return problem;
+}
+
+// The first mode bowed to 0.8 a (admissible between the walls); stepping moves the end.
+e2d::InitialGuess bowed_guess(const Column& col) {
+  e2d::InitialGuess guess;
+  guess.theta = [a = col.a, L = col.L](double s) { return 0.8 * a * kPi / L * std::cos(kPi * s / L); };
+  return guess;
+}
+
 // The wall gaps the cases honour, a / L: up to 0.3 (the reference's reachable gaps end at 0.33), from 1e-3 (the
 // reference's line branch is not bracketed at 1.7e-7; the point cases' own windows start at 0.03).
 constexpr double kMinWallGap = 1e-3, kMaxWallGap = 0.3;
@@ -281,16 +299,10 @@ LevelOutput run_cavity_level(e2d::Scheme scheme, Regime regime, const Parameters
   const double L = col.L, a = col.a;
   const ref::CavityState r = ref::cavity_from_shortening({L, col.EI, a}, col.d);
   const double force_unit = col.force_unit();
-  e2d::Problem problem;
-  problem.length = L;
-  problem.bending_stiffness = [EI = col.EI](double) { return EI; };
-  problem.start.support = e2d::Support::Pinned;
-  problem.end.support = e2d::Support::Pinned;
-  problem.end.x = L - col.d;
+  const e2d::Problem problem = column_problem(col);
   e2d::SolverOptions options;
   options.load_steps = 8;
-  e2d::InitialGuess guess;  // first mode bowed to 0.8 a (admissible); stepping moves the end
-  guess.theta = [a, L](double s) { return 0.8 * a * kPi / L * std::cos(kPi * s / L); };
+  const e2d::InitialGuess guess = bowed_guess(col);
   const std::size_t n = element_count(level);
   e2d::ContactOptions contact;
   if (lcp) {
@@ -591,20 +603,14 @@ constexpr SoftRow kSoftTable[] = {{1e-4, 23.99986, -23.84183}, {1e-5, 20.19246, 
 // The level is the dimensionless softness b L / EI; P and H are reported in units of EI / L^2.
 LevelOutput run_soft_level(const Parameters& p, double softness) {
   const double L = parameter_value(p, "L"), EI = parameter_value(p, "EI");
-  const double d = 0.026 * L, a = 0.1 * L, b = softness * EI / L, force_unit = EI / (L * L);
+  const Column col{L, EI, 0.026 * L, 0.1 * L};
+  const double a = col.a, b = softness * EI / L, force_unit = col.force_unit();
   const std::size_t n = element_count(parameter_value(p, "N"));
-  e2d::Problem problem;
-  problem.length = L;
-  problem.bending_stiffness = [EI](double) { return EI; };
-  problem.start.support = e2d::Support::Pinned;
-  problem.end.support = e2d::Support::Pinned;
-  problem.end.x = L - d;
   e2d::SolverOptions options;
   options.load_steps = 16;
-  e2d::InitialGuess guess;
-  guess.theta = [a, L](double s) { return 0.8 * a * kPi / L * std::cos(kPi * s / L); };
-  const PlanarRodSolution rod = e2d::solve_soft_walls(problem, {e2d::Scheme::Arcs, n}, a, b, options, guess);
-  const ref::CavityState hard = ref::cavity_from_shortening({L, EI, a}, d);
+  const PlanarRodSolution rod =
+      e2d::solve_soft_walls(column_problem(col), {e2d::Scheme::Arcs, n}, a, b, options, bowed_guess(col));
+  const ref::CavityState hard = ref::cavity_from_shortening({L, EI, a}, col.d);
   LevelOutput out;
   const auto spread = invariants::planar_noether_spread(rod);
   const double P = -rod.force_x[n / 2] / force_unit, H = spread.mean / force_unit;
