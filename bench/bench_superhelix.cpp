@@ -15,6 +15,11 @@
 //  - BM_JacobianExact / BM_JacobianCentralDifference: the static Jacobian of the same state, exact
 //    (load_stiffness.hpp, O(N^2)) and by central differences of the residual (6N residuals of O(N):
 //    what Newton used before).
+//  - BM_ClothoidStatics: the same static solve for the super-clothoid (Newton with its exact Jacobian,
+//    clothoid_load_stiffness.hpp), N = 8 .. 256 (issue 17's target: under 200 ms at N = 256).
+//  - BM_ClothoidJacobianExact / BM_ClothoidJacobianCentralDifference: the super-clothoid's static
+//    Jacobian, exact (O(N) element second-derivative series, O(N^2) block products) and by central
+//    differences (what its Newton used before, 2 x 3(N+1) residuals of O(N)).
 //  - BM_InverseStatics: q0, load stiffness and the generalised eigenvalue (dense, O(N^3)).
 //  - BM_InverseHairOnSphere: the inverse statics with frictional contact of S strands (10 elements,
 //    one contact each, mu = 0.6) lying on a sphere along great circles, strand by strand (no
@@ -141,8 +146,8 @@ void BM_Statics(benchmark::State& bench) {
   statics_benchmark(bench, [](const sh::RodModel& m, const sh::StaticOptions& o) { return sh::solve_static(m, o); });
 }
 
-// The super-clothoid's statics on the same heavy rod, on its central-difference Jacobian (issue 17's
-// target, under 200 ms at N = 256, needs exact derivatives: 2.4 s at N = 32, 8.3 s at N = 64, O(N^2)).
+// The super-clothoid's statics on the same heavy rod, on its exact Jacobian (clothoid_load_stiffness.hpp;
+// issue 17's target: under 200 ms at N = 256; on central differences it took 2.4 s at N = 32, 8.3 s at 64).
 void BM_ClothoidStatics(benchmark::State& bench) {
   statics_benchmark(bench, [](const sh::RodModel& m, const sh::StaticOptions& o) {
     return sh::solve_clothoid_static(m, o);
@@ -174,6 +179,31 @@ void BM_JacobianCentralDifference(benchmark::State& bench) {
   const rodvv::VecX q = heavy_equilibrium(model);
   const sh::StaticResidual residual = [&model](const rodvv::VecX& x, double lambda) {
     return sh::static_residual(model, x, lambda);
+  };
+  for (auto _ : bench) benchmark::DoNotOptimize(sh::central_difference_jacobian(residual, q, 1.0, model.length).data());
+  bench.SetComplexityN(bench.range(0));
+}
+
+// The super-clothoid's exact static Jacobian (forward-mode element second derivatives, O(N) of them, and
+// O(N^2) 6 x 6 block products) against central differences of its residual (2 n residuals of O(N)).
+rodvv::VecX clothoid_heavy_equilibrium(const sh::RodModel& model) {
+  sh::StaticOptions options;
+  options.load_steps = 2;
+  return sh::solve_clothoid_static(model, options).q;
+}
+
+void BM_ClothoidJacobianExact(benchmark::State& bench) {
+  const sh::RodModel model = heavy_model(static_cast<std::size_t>(bench.range(0)));
+  const rodvv::VecX q = clothoid_heavy_equilibrium(model);
+  for (auto _ : bench) benchmark::DoNotOptimize(sh::clothoid_static_jacobian(model, q).data());
+  bench.SetComplexityN(bench.range(0));
+}
+
+void BM_ClothoidJacobianCentralDifference(benchmark::State& bench) {
+  const sh::RodModel model = heavy_model(static_cast<std::size_t>(bench.range(0)));
+  const rodvv::VecX q = clothoid_heavy_equilibrium(model);
+  const sh::StaticResidual residual = [&model](const rodvv::VecX& x, double lambda) {
+    return sh::clothoid_static_residual(model, x, lambda);
   };
   for (auto _ : bench) benchmark::DoNotOptimize(sh::central_difference_jacobian(residual, q, 1.0, model.length).data());
   bench.SetComplexityN(bench.range(0));
@@ -336,7 +366,9 @@ BENCHMARK(BM_StepRecursiveMovingRoot)->RangeMultiplier(4)->Range(16, 1024)->ArgN
 BENCHMARK(BM_ClothoidStepRecursive)->RangeMultiplier(2)->Range(16, 1024)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
 BENCHMARK(BM_ClothoidStepDense)->RangeMultiplier(2)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMicrosecond)->Complexity();
 BENCHMARK(BM_Statics)->RangeMultiplier(2)->Range(8, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
-BENCHMARK(BM_ClothoidStatics)->RangeMultiplier(2)->Range(8, 64)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
+BENCHMARK(BM_ClothoidStatics)->RangeMultiplier(2)->Range(8, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
+BENCHMARK(BM_ClothoidJacobianExact)->RangeMultiplier(2)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
+BENCHMARK(BM_ClothoidJacobianCentralDifference)->RangeMultiplier(2)->Range(16, 64)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_JacobianExact)->RangeMultiplier(4)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_JacobianCentralDifference)->RangeMultiplier(4)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_SelfContacts)->RangeMultiplier(2)->Range(64, 1024)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();

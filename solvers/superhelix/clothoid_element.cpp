@@ -1,6 +1,7 @@
 #include "rodvv/solvers/superhelix/clothoid_element.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <string>
@@ -116,7 +117,7 @@ ClothoidPose clothoid_element(const Vec3& a, const Vec3& b, double ell, double t
   return out;
 }
 
-ClothoidJacobian clothoid_element_jacobian(const Vec3& a, const Vec3& b, double ell, double tolerance) {
+ClothoidJacobian clothoid_element_jacobian_complex_step(const Vec3& a, const Vec3& b, double ell, double tolerance) {
   validate_element(a, b, ell, tolerance);
   const std::size_t pieces = piece_count(a, b, ell);
   const Pose<double> pose = compose_pieces<double>(a, b, ell, pieces, tolerance);
@@ -233,6 +234,193 @@ ClothoidRates clothoid_element_rates(const Vec3& a, const Vec3& b, const Vec3& a
   out.angular_bias = axial(2.0 * pose.R.m2 * out.R.transpose());
   out.velocity = pose.r1;
   out.bias = 2.0 * pose.r2;
+  return out;
+}
+
+namespace {
+
+// Index of the unordered pair (p, q), p <= q < 6, among the 21 second derivatives.
+constexpr int pair_index(int p, int q) { return p * 6 - p * (p - 1) / 2 + (q - p); }
+
+// M [e_i]x by columns, without a product: column j is M (e_i x e_j), and e_i x e_j = e_k,
+// e_i x e_k = -e_j for (i, j, k) cyclic.
+Mat3 times_axis(const Mat3& M, int i) {
+  const int j = (i + 1) % 3, k = (i + 2) % 3;
+  Mat3 out;
+  out.col(i).setZero();
+  out.col(j) = M.col(k);
+  out.col(k) = -M.col(j);
+  return out;
+}
+
+// A pose with its first and second derivatives in the six strain parameters p = (a, b) of the
+// element (second derivatives stored for p <= q).
+struct PoseJet {
+  Mat3 R;
+  Vec3 r;
+  std::array<Mat3, 6> dR;
+  std::array<Vec3, 6> dr;
+  std::array<Mat3, 21> ddR;
+  std::array<Vec3, 21> ddr;
+};
+
+double largest_entry(const Mat3* matrices, std::size_t count) {
+  double largest = 0.0;
+  for (std::size_t m = 0; m < count; ++m) largest = std::max(largest, matrices[m].cwiseAbs().maxCoeff());
+  return largest;
+}
+
+// One sub-interval of length h starting at offset s0 of the element, from the identity, with
+// strain (a + s0 b) + s b: the recurrence of series_piece differentiated once and (kSecond) twice. Its two
+// strain matrices depend on p through d[a + s0 b]x/da_i = [e_i]x, d[a + s0 b]x/db_i = s0 [e_i]x,
+// d[b]x/db_i = [e_i]x (both linear in p, so their second derivatives vanish). Stops when the value
+// and both derivative parts (relative to their running sums) stay below the tolerance twice.
+template <bool kSecond>
+PoseJet series_piece_jet(const Vec3& a, const Vec3& b, double s0, double h, double tolerance) {
+  const Mat3 Xa = skew(a + s0 * b) * h, Xb = skew(b) * (h * h);
+  std::array<double, 6> alpha{}, beta{};  // d(Xa)/dp = alpha_p [e_i]x, d(Xb)/dp = beta_p [e_i]x, i = p mod 3
+  for (int p = 0; p < 3; ++p) {
+    alpha[p] = h;
+    alpha[p + 3] = s0 * h;
+    beta[p + 3] = h * h;
+  }
+  Mat3 previous = Mat3::Zero(), current = Mat3::Identity();  // A_{k-1} h^(k-1), A_k h^k
+  std::array<Mat3, 6> d_previous, d_current;
+  std::array<Mat3, 21> dd_previous, dd_current;
+  for (auto& m : d_previous) m.setZero();
+  for (auto& m : d_current) m.setZero();
+  for (auto& m : dd_previous) m.setZero();
+  for (auto& m : dd_current) m.setZero();
+  PoseJet pose;
+  pose.R.setIdentity();
+  pose.r = h * Vec3::UnitX();
+  for (auto& m : pose.dR) m.setZero();
+  for (auto& v : pose.dr) v.setZero();
+  for (auto& m : pose.ddR) m.setZero();
+  for (auto& v : pose.ddr) v.setZero();
+  int small_terms = 0;
+  constexpr std::size_t kMaxTerms = 200;
+  std::size_t k = 0;
+  for (; k < kMaxTerms; ++k) {
+    const double inv = 1.0 / static_cast<double>(k + 1), weight = h / static_cast<double>(k + 2);
+    const Mat3 next = (current * Xa + previous * Xb) * inv;
+    std::array<Mat3, 6> d_next;
+    for (int p = 0; p < 6; ++p)
+      d_next[p] = (d_current[p] * Xa + d_previous[p] * Xb + alpha[p] * times_axis(current, p % 3) +
+                   beta[p] * times_axis(previous, p % 3)) * inv;
+    std::array<Mat3, 21> dd_next;
+    if constexpr (kSecond) {
+      // d_current[p] [e_i]x and d_previous[p] [e_i]x, the products every second derivative needs.
+      std::array<std::array<Mat3, 3>, 6> d_current_axis, d_previous_axis;
+      for (int p = 0; p < 6; ++p)
+        for (int i = 0; i < 3; ++i) {
+          d_current_axis[p][i] = times_axis(d_current[p], i);
+          d_previous_axis[p][i] = times_axis(d_previous[p], i);
+        }
+      for (int p = 0; p < 6; ++p)
+        for (int q = p; q < 6; ++q) {
+          const int pq = pair_index(p, q);
+          dd_next[pq] = (dd_current[pq] * Xa + dd_previous[pq] * Xb + alpha[q] * d_current_axis[p][q % 3] +
+                         alpha[p] * d_current_axis[q][p % 3] + beta[q] * d_previous_axis[p][q % 3] +
+                         beta[p] * d_previous_axis[q][p % 3]) * inv;
+        }
+    }
+    pose.R += next;
+    pose.r += weight * next.col(0);
+    for (int p = 0; p < 6; ++p) {
+      pose.dR[p] += d_next[p];
+      pose.dr[p] += weight * d_next[p].col(0);
+    }
+    if constexpr (kSecond)
+      for (int pq = 0; pq < 21; ++pq) {
+        pose.ddR[pq] += dd_next[pq];
+        pose.ddr[pq] += weight * dd_next[pq].col(0);
+      }
+    previous = current;
+    current = next;
+    d_previous = d_current;
+    d_current = d_next;
+    if constexpr (kSecond) {
+      dd_previous = dd_current;
+      dd_current = dd_next;
+    }
+    const bool small =
+        next.cwiseAbs().maxCoeff() < tolerance &&
+        largest_entry(d_next.data(), 6) < tolerance * std::max(1.0, largest_entry(pose.dR.data(), 6)) &&
+        (!kSecond ||
+         largest_entry(dd_next.data(), 21) < tolerance * std::max(1.0, largest_entry(pose.ddR.data(), 21)));
+    small_terms = small ? small_terms + 1 : 0;
+    if (small_terms >= 2) break;
+  }
+  if (k == kMaxTerms)
+    throw SolverError("super-clothoid second-derivative series", "no convergence in " + std::to_string(kMaxTerms) +
+                      " terms", k, current.cwiseAbs().maxCoeff());
+  return pose;
+}
+
+// (R, r) <- (R_A R_B, r_A + R_A r_B) with the product rule to first and (kSecond) second order.
+template <bool kSecond>
+PoseJet compose(const PoseJet& A, const PoseJet& B) {
+  PoseJet out;
+  out.R = A.R * B.R;
+  out.r = A.r + A.R * B.r;
+  for (int p = 0; p < 6; ++p) {
+    out.dR[p] = A.dR[p] * B.R + A.R * B.dR[p];
+    out.dr[p] = A.dr[p] + A.dR[p] * B.r + A.R * B.dr[p];
+  }
+  for (int p = 0; kSecond && p < 6; ++p)
+    for (int q = p; q < 6; ++q) {
+      const int pq = pair_index(p, q);
+      out.ddR[pq] = A.ddR[pq] * B.R + A.dR[p] * B.dR[q] + A.dR[q] * B.dR[p] + A.R * B.ddR[pq];
+      out.ddr[pq] = A.ddr[pq] + A.ddR[pq] * B.r + A.dR[p] * B.dr[q] + A.dR[q] * B.dr[p] + A.R * B.ddr[pq];
+    }
+  return out;
+}
+
+template <bool kSecond>
+PoseJet pose_jet(const Vec3& a, const Vec3& b, double ell, double tolerance) {
+  validate_element(a, b, ell, tolerance);
+  const std::size_t pieces = piece_count(a, b, ell);
+  const double h = ell / static_cast<double>(pieces);
+  PoseJet pose = series_piece_jet<kSecond>(a, b, 0.0, h, tolerance);
+  for (std::size_t j = 1; j < pieces; ++j)
+    pose = compose<kSecond>(pose, series_piece_jet<kSecond>(a, b, static_cast<double>(j) * h, h, tolerance));
+  return pose;
+}
+
+}  // namespace
+
+ClothoidJacobian clothoid_element_jacobian(const Vec3& a, const Vec3& b, double ell, double tolerance) {
+  const PoseJet pose = pose_jet<false>(a, b, ell, tolerance);
+  ClothoidJacobian out;
+  out.R = pose.R;
+  out.r = pose.r;
+  const Mat3 Rt = pose.R.transpose();
+  for (int p = 0; p < 6; ++p) {
+    out.rotation.col(p) = axial(pose.dR[p] * Rt);  // dR/dp R^T = [Theta_p]x
+    out.translation.col(p) = pose.dr[p];
+  }
+  return out;
+}
+
+ClothoidSecondDerivatives clothoid_element_second_derivatives(const Vec3& a, const Vec3& b, double ell,
+                                                              double tolerance) {
+  const PoseJet pose = pose_jet<true>(a, b, ell, tolerance);
+  ClothoidSecondDerivatives out;
+  out.R = pose.R;
+  out.r = pose.r;
+  const Mat3 Rt = pose.R.transpose();
+  for (int p = 0; p < 6; ++p) {
+    out.rotation.col(p) = axial(pose.dR[p] * Rt);  // dR/dp R^T = [Theta_p]x
+    out.translation.col(p) = pose.dr[p];
+  }
+  // d[Theta_p]x/dq = d2R/dp dq R^T + dR/dp (dR/dq)^T (skew, as the derivative of a skew matrix).
+  for (int p = 0; p < 6; ++p)
+    for (int q = 0; q < 6; ++q) {
+      const int pq = pair_index(std::min(p, q), std::max(p, q));
+      out.rotation_rate[q].col(p) = axial(pose.ddR[pq] * Rt + pose.dR[p] * pose.dR[q].transpose());
+      out.translation_hessian[q].col(p) = pose.ddr[pq];
+    }
   return out;
 }
 

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "rodvv/common/errors.hpp"
+#include "rodvv/solvers/superhelix/clothoid_load_stiffness.hpp"
 
 namespace rodvv::solvers::superhelix {
 
@@ -68,18 +69,23 @@ VecX clothoid_generalised_force(const ClothoidKinematics& kinematics, const std:
 
 bool clothoid_loads_at_points(const RodModel& model) { return !model.gravity.isZero(0.0) || !model.point_forces.empty(); }
 
-VecX clothoid_external_force(const RodModel& model, const ClothoidKinematics& kinematics, double load_factor) {
+std::vector<Vec3> clothoid_point_loads(const RodModel& model, const ClothoidKinematics& kinematics,
+                                       double load_factor) {
   std::vector<Vec3> loads;  // gravity m_g g plus the dead point forces, per Gauss point
-  if (clothoid_loads_at_points(model)) {
-    if (kinematics.points().empty())
-      throw InputError("kinematics", "invalid parameter 'kinematics': built without Gauss points, but gravity or "
-                                     "point forces are non-zero (construct it with with_points = true)");
-    loads.reserve(kinematics.points().size());
-    for (std::size_t g = 0; g < kinematics.points().size(); ++g)
-      loads.push_back(load_factor * (kinematics.points()[g].mass * model.gravity +
-                                     (model.point_forces.empty() ? Vec3::Zero() : model.point_forces[g])));
-  }
-  return clothoid_generalised_force(kinematics, loads, load_factor * model.end_force, load_factor * model.end_moment);
+  if (!clothoid_loads_at_points(model)) return loads;
+  if (kinematics.points().empty())
+    throw InputError("kinematics", "invalid parameter 'kinematics': built without Gauss points, but gravity or "
+                                   "point forces are non-zero (construct it with with_points = true)");
+  loads.reserve(kinematics.points().size());
+  for (std::size_t g = 0; g < kinematics.points().size(); ++g)
+    loads.push_back(load_factor * (kinematics.points()[g].mass * model.gravity +
+                                   (model.point_forces.empty() ? Vec3::Zero() : model.point_forces[g])));
+  return loads;
+}
+
+VecX clothoid_external_force(const RodModel& model, const ClothoidKinematics& kinematics, double load_factor) {
+  return clothoid_generalised_force(kinematics, clothoid_point_loads(model, kinematics, load_factor),
+                                    load_factor * model.end_force, load_factor * model.end_moment);
 }
 
 double clothoid_elastic_energy(const RodModel& model, const VecX& q) {
@@ -99,6 +105,14 @@ VecX clothoid_static_residual(const RodModel& model, const VecX& q, double load_
          clothoid_external_force(model, kinematics, load_factor);
 }
 
+MatX clothoid_static_jacobian(const RodModel& model, const VecX& q, double load_factor) {
+  const ClothoidKinematics kinematics(model, q, clothoid_loads_at_points(model));
+  MatX J = clothoid_load_stiffness(model, kinematics, load_factor);  // in place: one n x n buffer
+  J *= -1.0;
+  J += clothoid_stiffness(model);
+  return J;
+}
+
 StaticResult solve_clothoid_static(const RodModel& model, const StaticOptions& options) {
   validate_clothoid(model);
   const VecX q0 = clothoid_natural_strain_vector(model);
@@ -112,7 +126,10 @@ StaticResult solve_clothoid_static(const RodModel& model, const StaticOptions& o
   const StaticResidual residual = [&model, &K, &q0, with_points](const VecX& x, double lambda) {
     return VecX(K * (x - q0) - clothoid_external_force(model, ClothoidKinematics(model, x, with_points), lambda));
   };
-  return newton_load_stepping(residual, q0, scales, options, "super-clothoid Newton");
+  const StaticJacobian jacobian = [&model](const VecX& x, double lambda) {
+    return clothoid_static_jacobian(model, x, lambda);
+  };
+  return newton_load_stepping(residual, q0, scales, options, "super-clothoid Newton", jacobian);
 }
 
 }  // namespace rodvv::solvers::superhelix

@@ -282,7 +282,7 @@ TEST(SuperHelixGatesHaveTeeth, ClothoidFourthOrderClaimedAsSecondOrSixthFails) {
     EXPECT_FALSE(run_at_default_levels(wrong).passed()) << claimed;
   }
   // A 1e-4 relative change of the load seen by the solver (not by the reference) moves the tip by
-  // ~1e-5 >> the C h^4 bound 3.2e-7 at N = 8.
+  // ~1e-5 >> the C h^4 bound 1.2e-9 at N = 32.
   Case perturbed = named("superhelix/clothoid-mattiasson-2");
   const auto runner = perturbed.run_level;
   perturbed.run_level = [runner](const Parameters& p, double level) {
@@ -512,7 +512,7 @@ TEST(SuperHelixGatesHaveTeeth, ClothoidHeavyCantileverWrongClaimsFail) {
   ASSERT_EQ(result.gates.size(), 3u);
   for (const auto& gate : result.gates) EXPECT_FALSE(gate.passed) << gate.name;
   // A 1e-4 relative change of the weight seen by the solver (not by the reference) moves the tip by
-  // ~1e-5 >> the C h^4 bound 3.9e-6 at N = 8.
+  // ~1e-5 >> the C h^4 bound 9.4e-10 at N = 64.
   Case perturbed = base;
   const auto runner = perturbed.run_level;
   perturbed.run_level = [runner](const Parameters& p, double level) {
@@ -532,10 +532,9 @@ TEST(SuperHelixGatesHaveTeeth, ClothoidHeavyCantileverWrongClaimsFail) {
 
 TEST(SuperHelixCases, StoredClothoidHeavyTipMatchesTheLiveExtrapolation) {
   // At w L^3 / EI = 3 the case compares with a stored tip (the Super-Helix at N = 128 ... 512,
-  // extrapolated twice); at any other weight it recomputes it (N = 32, 64, one h^2 Richardson step).
-  // A weight 1e-12 away takes the live path and moves the tip by ~1e-12. Measured |difference| =
-  // 2.92e-9 (the live path's O(h^4) remainder: the super-clothoid, converging at order 4 with ratio
-  // 16.0 between N = 16 and 32, agrees with the stored tip to 4e-10 at N = 64). Bound: 2 x measured.
+  // extrapolated twice); at any other weight it recomputes it the same way. A weight 1e-12 away takes
+  // the live path and moves the tip by ~1e-12. Measured |difference| = 2.1e-13; bound 1e-12, twice the
+  // stored extrapolation's last correction (5e-13) and 2e-3 of the finest level's error (4.7e-10).
   const Case& base = named("superhelix/clothoid-heavy-cantilever");
   Parameters stored = base.info.parameters, live = stored;
   set_parameter(live, "w", parameter_value(stored, "w") * (1.0 + 1e-12));
@@ -546,7 +545,7 @@ TEST(SuperHelixCases, StoredClothoidHeavyTipMatchesTheLiveExtrapolation) {
   int i = 0;
   for (const char* name : {"tip_x", "tip_y", "tip_z"})
     difference[i++] = *at_stored.metrics.at(name).reference - *at_live.metrics.at(name).reference;
-  EXPECT_LE(difference.norm(), 5.8e-9);
+  EXPECT_LE(difference.norm(), 1e-12);
   EXPECT_GT(difference.norm(), 0.0);  // the live path was taken
 }
 

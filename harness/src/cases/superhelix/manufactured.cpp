@@ -132,35 +132,31 @@ void add_manufactured(Registry& registry) {
   // The super-clothoid (strains affine per element, nodal strains) on the same problem, the same Gauss-point
   // loads of its own quadrature; stations at the element midpoints (where n(s) from the lumped point forces is
   // second order; at the Gauss stations it is first order, the forces beyond a station changing in steps).
-  // Measured at the defaults (2026-11-28) over N = 4 .. 24: position and frame at order 4 (4.51, 4.12, 4.03 and
-  // 4.23, 4.00, 4.01 pairwise), strain, force and moment at 2 (the affine strain's midpoint value); at N = 12
-  // position 2.5366e-6, frame 3.2795e-5, strain 1.2126e-2, force 1.1337e-3, moment 5.0768e-3. Each level costs
-  // the clothoid's finite-difference Newton: 0.5, 1.5, 2.5 s.
+  // Measured at the defaults (2026-11-28, on the exact-Jacobian Newton) over N = 4 .. 128: position and frame
+  // at order 4 (4.51, 4.12, 4.03, 4.01, 4.00 and 4.23, 4.00, 4.01, 4.01, 4.00 pairwise), strain, force and
+  // moment at 2 (the affine strain's midpoint value); at N = 64 position 3.0013e-9, frame 3.9888e-8, strain
+  // 4.2620e-4, force 4.0299e-5, moment 1.6546e-4. The levels are the Super-Helix's (N = 8 .. 64: 0.19 s at
+  // N = 64; on central differences N = 24 took 2.5 s and the levels stopped at 12).
   Case clothoid = c;
   clothoid.info.name = "superhelix/clothoid-manufactured";
   clothoid.info.group = "superhelix/manufactured";
   clothoid.info.title = "Manufactured 3-D equilibrium without distributed couple, super-clothoid";
   clothoid.info.method =
       "Super-clothoid (Casati & Bertails-Descoubes 2013; ALGORITHMS.md §2): nodal twist and curvatures, affine per "
-      "element; frame and centreline by the adaptive power series; statics by the Super-Helix Newton "
-      "(finite-difference Jacobian, line search, load stepping)";
-  clothoid.info.resolution = element_levels("number of elements", {4, 8, 12}, {4, 8, 12, 16, 24});
+      "element; frame and centreline by the adaptive power series; statics by the Super-Helix Newton on the "
+      "exact Jacobian (line search, load stepping)";
+  clothoid.info.resolution = element_levels("number of elements", {8, 16, 32, 64}, {8, 16, 32, 64, 128});
   clothoid.gates.clear();
-  const double h = 1.0 / 12.0;
+  const double h = 1.0 / 64.0;
   for (const auto& [metric, order, measured] :
-       {std::tuple{"position", 4.0, 2.5366e-6}, {"frame", 4.0, 3.2795e-5}, {"strain", 2.0, 1.2126e-2},
-        {"force", 2.0, 1.1337e-3}, {"moment", 2.0, 5.0768e-3}}) {
+       {std::tuple{"position", 4.0, 3.0013e-9}, {"frame", 4.0, 3.9888e-8}, {"strain", 2.0, 4.2620e-4},
+        {"force", 2.0, 4.0299e-5}, {"moment", 2.0, 1.6546e-4}}) {
     clothoid.gates.push_back(order_gate(metric, order,
                                         order == 4.0 ? "the clothoid's shape is fourth order (affine strains integrated "
                                                        "exactly per element)"
                                                      : "affine strains: second order at the element midpoints"));
     clothoid.gates.push_back(measured_bound(metric, measured, h, order));
   }
-  // Its default levels are coarse: measured 2026-11-28, every gate passes at amplitudes 0.8 to 1.6; outside, the
-  // frame's and the force's orders are pre-asymptotic on N = 4, 8, 12 (3.66 and 1.86 at 0.01, 4.58 and 1.76 at
-  // 2.4), while N = 4 .. 24 fit 3.97 and 2.00 at 0.05.
-  for (auto& parameter : clothoid.info.parameters)
-    if (parameter.name == "amplitude") parameter.min = 0.8, parameter.max = 1.6, parameter.min_open = false;
   for (auto& metric : clothoid.info.metrics)
     if (metric.name == "position" || metric.name == "frame") metric.theoretical_order = 4.0;
   split_level(clothoid, solve_clothoid, measure);

@@ -30,9 +30,12 @@ ClothoidPose clothoid_element(const Vec3& a, const Vec3& b, double ell, double t
 
 // The pose at sigma = ell and its derivatives with respect to p = (a_0, a_1, a_2, b_0, b_1, b_2),
 // in the element's own base frame: rotation.col(p) = Theta_p with dR/dp = [Theta_p]x R (§1.3),
-// translation.col(p) = dr/dp. Computed by complex-step differentiation of the same series (the
-// subdivision is fixed by the real strains), so the derivatives are exact to round-off. Same
-// InputError as clothoid_element.
+// translation.col(p) = dr/dp. Forward-mode differentiation of the series recurrence (six derivative
+// matrices per term, same subdivision), exact to round-off.
+// clothoid_element_jacobian_complex_step computes the same by complex-step differentiation of the
+// series itself (f'(p) = Im f(p + i t) / t, no cancellation, so t = 1e-30 and exact to round-off):
+// an independent path that shares no derivative code, kept as the check of the forward mode (it is
+// ~5x slower: complex arithmetic, seven series). Same InputError as clothoid_element.
 struct ClothoidJacobian {
   Mat3 R;
   Vec3 r;
@@ -41,6 +44,29 @@ struct ClothoidJacobian {
 };
 
 ClothoidJacobian clothoid_element_jacobian(const Vec3& a, const Vec3& b, double ell, double tolerance = 1e-17);
+ClothoidJacobian clothoid_element_jacobian_complex_step(const Vec3& a, const Vec3& b, double ell,
+                                                        double tolerance = 1e-17);
+
+// First and second derivatives of the pose at sigma = ell with respect to p = (a, b), for the exact
+// load stiffness of the statics (clothoid_load_stiffness.hpp), in the element's base frame:
+//   rotation, translation: as ClothoidJacobian;
+//   rotation_rate[q].col(p)       = dTheta_p / dp_q (Theta_p = axial(dR/dp_p R^T));
+//   translation_hessian[q].col(p) = d2r / dp_p dp_q (symmetric in p, q).
+// Forward-mode differentiation of the series recurrence (dA_{k+1}/dp and d2A_{k+1}/dp dq from
+// (k+1) A_{k+1} = A_k [a]x + A_{k-1} [b]x, 27 matrices per term, same subdivision, the products
+// rule across sub-intervals), so exact to round-off and sharing no code with the complex step.
+// Same InputError as clothoid_element.
+struct ClothoidSecondDerivatives {
+  Mat3 R;
+  Vec3 r;
+  Eigen::Matrix<double, 3, 6> rotation;
+  Eigen::Matrix<double, 3, 6> translation;
+  Eigen::Matrix<double, 3, 6> rotation_rate[6];
+  Eigen::Matrix<double, 3, 6> translation_hessian[6];
+};
+
+ClothoidSecondDerivatives clothoid_element_second_derivatives(const Vec3& a, const Vec3& b, double ell,
+                                                              double tolerance = 1e-17);
 
 // Rates along strain velocities (a(t) = a + t adot, b(t) = b + t bdot), for the velocity terms of
 // the dynamics, in the element's base frame at sigma = ell: dR/dt = [angular_velocity]x R,

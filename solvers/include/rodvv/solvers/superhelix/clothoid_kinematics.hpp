@@ -9,7 +9,7 @@
 // Per element: base frame R_Q and point p_Q (Q = 0 .. N, N = tip), and the end Jacobians
 //   S_Q = [Theta_Q(ell); T_Q(ell)] (3 x 6 each, world): rotation and end translation per unit change
 //   of the element's two nodal strains (columns 0-2: node Q, 3-5: node Q + 1),
-// from clothoid_element_jacobian (series + complex step, exact to round-off) by the chain rule
+// from clothoid_element_jacobian (series, forward mode, exact to round-off) by the chain rule
 // d/dq_Q = d/da - d/db / ell, d/dq_{Q+1} = d/db / ell. Downstream of an element everything is
 // rigidly carried, as for the Super-Helix (§1.3): for a point on element Q and P < Q,
 //   dr/dq (through element P) = Theta_P x (r - p_{P+1}) + T_P,
