@@ -88,6 +88,7 @@ inline double unit_factor(const std::string& unit, double length, double mass, d
     else if (token == "mass") base = mass;
     else if (token == "time") base = time;
     else if (token == "force") base = mass * length / (time * time);
+    else if (token == "energy") base = mass * length * length / (time * time);
     else if (token != "1" && token != "rad" && token != "deg" && token != "degrees")
       throw std::invalid_argument("unit_factor: unknown unit word '" + token + "' in '" + unit + "'");
     factor *= std::pow(base, denominator ? -power : power);
@@ -135,6 +136,31 @@ inline void expect_metrics_free_of_units(const harness::Case& c, double length, 
     const double a = sample.error ? *sample.error : sample.computed;
     const double b = other_sample.error ? *other_sample.error : other_sample.computed;
     EXPECT_NEAR(b, a, relative * std::max(std::abs(a), floor)) << c.info.name << " " << metric;
+  }
+}
+
+// For cases whose metrics carry physical units (MetricSpec::unit, e.g. "length", "mass length/time", "energy"):
+// posed in other units, each metric's error (value where it has no reference) is the default's times its unit's
+// factor, within relative * max(|scaled|, floor * factor). Metrics in `round_off` are not compared.
+inline void expect_metrics_scale_with_units(const harness::Case& c, double length, double mass, double time,
+                                            double relative, double floor,
+                                            const std::vector<std::string>& round_off = {}) {
+  const harness::Parameters other = in_other_units(c.info.parameters, length, mass, time);
+  if (c.check_parameters) c.check_parameters(other);
+  const double level = c.info.resolution.default_levels.front();
+  const harness::LevelOutput at_default = c.run_level(c.info.parameters, level);
+  const harness::LevelOutput at_other = c.run_level(other, level);
+  ASSERT_FALSE(at_default.metrics.empty()) << c.info.name;
+  for (const auto& spec : c.info.metrics) {
+    if (std::find(round_off.begin(), round_off.end(), spec.name) != round_off.end()) continue;
+    const auto found = at_default.metrics.find(spec.name);
+    if (found == at_default.metrics.end()) continue;
+    const auto& sample = found->second;
+    const auto& other_sample = at_other.metrics.at(spec.name);
+    const double factor = unit_factor(spec.unit, length, mass, time);
+    const double a = factor * (sample.error ? *sample.error : sample.computed);
+    const double b = other_sample.error ? *other_sample.error : other_sample.computed;
+    EXPECT_NEAR(b, a, relative * std::max(std::abs(a), floor * factor)) << c.info.name << " " << spec.name;
   }
 }
 
