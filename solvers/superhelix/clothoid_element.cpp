@@ -388,32 +388,31 @@ PoseJet pose_jet(const Vec3& a, const Vec3& b, double ell, double tolerance) {
   return pose;
 }
 
-}  // namespace
-
-ClothoidJacobian clothoid_element_jacobian(const Vec3& a, const Vec3& b, double ell, double tolerance) {
-  const PoseJet pose = pose_jet<false>(a, b, ell, tolerance);
+// The pose and its first derivatives: dR/dp R^T = [Theta_p]x.
+ClothoidJacobian first_order(const PoseJet& pose) {
   ClothoidJacobian out;
   out.R = pose.R;
   out.r = pose.r;
   const Mat3 Rt = pose.R.transpose();
   for (int p = 0; p < 6; ++p) {
-    out.rotation.col(p) = axial(pose.dR[p] * Rt);  // dR/dp R^T = [Theta_p]x
+    out.rotation.col(p) = axial(pose.dR[p] * Rt);
     out.translation.col(p) = pose.dr[p];
   }
   return out;
+}
+
+}  // namespace
+
+ClothoidJacobian clothoid_element_jacobian(const Vec3& a, const Vec3& b, double ell, double tolerance) {
+  return first_order(pose_jet<false>(a, b, ell, tolerance));
 }
 
 ClothoidSecondDerivatives clothoid_element_second_derivatives(const Vec3& a, const Vec3& b, double ell,
                                                               double tolerance) {
   const PoseJet pose = pose_jet<true>(a, b, ell, tolerance);
   ClothoidSecondDerivatives out;
-  out.R = pose.R;
-  out.r = pose.r;
+  static_cast<ClothoidJacobian&>(out) = first_order(pose);
   const Mat3 Rt = pose.R.transpose();
-  for (int p = 0; p < 6; ++p) {
-    out.rotation.col(p) = axial(pose.dR[p] * Rt);  // dR/dp R^T = [Theta_p]x
-    out.translation.col(p) = pose.dr[p];
-  }
   // d[Theta_p]x/dq = d2R/dp dq R^T + dR/dp (dR/dq)^T (skew, as the derivative of a skew matrix).
   for (int p = 0; p < 6; ++p)
     for (int q = 0; q < 6; ++q) {

@@ -49,18 +49,14 @@ ClothoidJacobian clothoid_element_jacobian_complex_step(const Vec3& a, const Vec
 
 // First and second derivatives of the pose at sigma = ell with respect to p = (a, b), for the exact
 // load stiffness of the statics (clothoid_load_stiffness.hpp), in the element's base frame:
-//   rotation, translation: as ClothoidJacobian;
+//   R, r, rotation, translation: as ClothoidJacobian (the base);
 //   rotation_rate[q].col(p)       = dTheta_p / dp_q (Theta_p = axial(dR/dp_p R^T));
 //   translation_hessian[q].col(p) = d2r / dp_p dp_q (symmetric in p, q).
 // Forward-mode differentiation of the series recurrence (dA_{k+1}/dp and d2A_{k+1}/dp dq from
 // (k+1) A_{k+1} = A_k [a]x + A_{k-1} [b]x, 27 matrices per term, same subdivision, the products
 // rule across sub-intervals), so exact to round-off and sharing no code with the complex step.
 // Same InputError as clothoid_element.
-struct ClothoidSecondDerivatives {
-  Mat3 R;
-  Vec3 r;
-  Eigen::Matrix<double, 3, 6> rotation;
-  Eigen::Matrix<double, 3, 6> translation;
+struct ClothoidSecondDerivatives : ClothoidJacobian {
   Eigen::Matrix<double, 3, 6> rotation_rate[6];
   Eigen::Matrix<double, 3, 6> translation_hessian[6];
 };
