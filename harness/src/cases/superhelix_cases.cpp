@@ -383,8 +383,8 @@ LevelOutput run_heavy(const Parameters& p, double level) {
 // Tip of the heavy cantilever (root at the origin): the Super-Helix (second order, an independent rod
 // model) at N = 128, 256, 512 (tolerance 1e-14), extrapolated twice (h^2 then h^4 Richardson). At
 // weight = 3 the stored result (per unit L; the last correction 5e-13, 2026-11-21); at other weights
-// computed live (~0.15 s). The super-clothoid at N = 64 agrees to 4e-10 (its O(h^4) error), so the
-// reference's error is 1e-3 of the finest default level's (N = 32: 5e-10).
+// computed live (~0.15 s). The super-clothoid at N = 64, its finest default level, agrees to 4.7e-10
+// (its O(h^4) error), 1e3 times the reference's.
 const Vec3 kHeavyTipAtWeight3(0.65485121488338932, 0.21774040484668871, -0.57684254917621921);
 
 Vec3 heavy_tip_reference(const Parameters& p) {
