@@ -53,7 +53,7 @@ ClothoidJacobian clothoid_element_jacobian_complex_step(const Vec3& a, const Vec
 //   rotation_rate[q].col(p)       = dTheta_p / dp_q (Theta_p = axial(dR/dp_p R^T));
 //   translation_hessian[q].col(p) = d2r / dp_p dp_q (symmetric in p, q).
 // Forward-mode differentiation of the series recurrence (dA_{k+1}/dp and d2A_{k+1}/dp dq from
-// (k+1) A_{k+1} = A_k [a]x + A_{k-1} [b]x, 27 matrices per term, same subdivision, the products
+// (k+1) A_{k+1} = A_k [a]x + A_{k-1} [b]x, 27 matrices per term, same subdivision, the product
 // rule across sub-intervals), so exact to round-off and sharing no code with the complex step.
 // Same InputError as clothoid_element.
 struct ClothoidSecondDerivatives : ClothoidJacobian {
