@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -117,12 +119,12 @@ inline harness::Parameters in_other_units(const harness::Parameters& parameters,
   return other;
 }
 
-// A case posed in other units reports the same metrics: the metric errors (values where a metric has no
-// reference) at its coarsest default level agree within relative * max(|value|, floor) (floor: the size below which a value is round-off, e.g. 1e-10 for
-// metrics that are 0 in exact arithmetic); metrics in `round_off` (measured in eps) are not compared.
-inline void expect_metrics_free_of_units(const harness::Case& c, double length, double mass, double time,
-                                         double relative, double floor,
-                                         const std::vector<std::string>& round_off = {}) {
+// Runs a case at its coarsest default level in its own units and in other units, and compares each metric's
+// error (its value where it has no reference: what the gates see) with the default's times expected_factor(name)
+// (nullopt: not compared), within relative * max(|expected|, floor * factor). Metrics in `round_off` are skipped.
+inline void expect_metrics_in_other_units(const harness::Case& c, double length, double mass, double time,
+                                          double relative, double floor, const std::vector<std::string>& round_off,
+                                          const std::function<std::optional<double>(const std::string&)>& expected_factor) {
   const harness::Parameters other = in_other_units(c.info.parameters, length, mass, time);
   if (c.check_parameters) c.check_parameters(other);  // windows on dimensionless groups: the same verdict
   const double level = c.info.resolution.default_levels.front();
@@ -131,37 +133,37 @@ inline void expect_metrics_free_of_units(const harness::Case& c, double length, 
   ASSERT_FALSE(at_default.metrics.empty()) << c.info.name;
   for (const auto& [metric, sample] : at_default.metrics) {
     if (std::find(round_off.begin(), round_off.end(), metric) != round_off.end()) continue;
-    // The error where there is one (what the gates see: dimensionless by the case's own scale), else the value.
+    const std::optional<double> factor = expected_factor(metric);
+    if (!factor) continue;
     const auto& other_sample = at_other.metrics.at(metric);
-    const double a = sample.error ? *sample.error : sample.computed;
+    const double a = *factor * (sample.error ? *sample.error : sample.computed);
     const double b = other_sample.error ? *other_sample.error : other_sample.computed;
-    EXPECT_NEAR(b, a, relative * std::max(std::abs(a), floor)) << c.info.name << " " << metric;
+    EXPECT_NEAR(b, a, relative * std::max(std::abs(a), floor * *factor)) << c.info.name << " " << metric;
   }
 }
 
+// A case posed in other units reports the same metrics (its errors are dimensionless, in the case's own
+// units); floor: the size below which a value is round-off, e.g. 1e-10 for metrics that are 0 in exact
+// arithmetic; metrics in `round_off` (measured in eps) are not compared.
+inline void expect_metrics_free_of_units(const harness::Case& c, double length, double mass, double time,
+                                         double relative, double floor,
+                                         const std::vector<std::string>& round_off = {}) {
+  expect_metrics_in_other_units(c, length, mass, time, relative, floor, round_off,
+                                [](const std::string&) { return std::optional<double>(1.0); });
+}
+
 // For cases whose metrics carry physical units (MetricSpec::unit, e.g. "length", "mass length/time", "energy"):
-// posed in other units, each metric's error (value where it has no reference) is the default's times its unit's
-// factor, within relative * max(|scaled|, floor * factor). Metrics in `round_off` are not compared.
+// posed in other units, each metric is the default's times its unit's factor. Metrics without a MetricSpec
+// and those in `round_off` are not compared.
 inline void expect_metrics_scale_with_units(const harness::Case& c, double length, double mass, double time,
                                             double relative, double floor,
                                             const std::vector<std::string>& round_off = {}) {
-  const harness::Parameters other = in_other_units(c.info.parameters, length, mass, time);
-  if (c.check_parameters) c.check_parameters(other);
-  const double level = c.info.resolution.default_levels.front();
-  const harness::LevelOutput at_default = c.run_level(c.info.parameters, level);
-  const harness::LevelOutput at_other = c.run_level(other, level);
-  ASSERT_FALSE(at_default.metrics.empty()) << c.info.name;
-  for (const auto& spec : c.info.metrics) {
-    if (std::find(round_off.begin(), round_off.end(), spec.name) != round_off.end()) continue;
-    const auto found = at_default.metrics.find(spec.name);
-    if (found == at_default.metrics.end()) continue;
-    const auto& sample = found->second;
-    const auto& other_sample = at_other.metrics.at(spec.name);
-    const double factor = unit_factor(spec.unit, length, mass, time);
-    const double a = factor * (sample.error ? *sample.error : sample.computed);
-    const double b = other_sample.error ? *other_sample.error : other_sample.computed;
-    EXPECT_NEAR(b, a, relative * std::max(std::abs(a), floor * factor)) << c.info.name << " " << spec.name;
-  }
+  expect_metrics_in_other_units(c, length, mass, time, relative, floor, round_off,
+                                [&](const std::string& metric) -> std::optional<double> {
+                                  for (const auto& spec : c.info.metrics)
+                                    if (spec.name == metric) return unit_factor(spec.unit, length, mass, time);
+                                  return std::nullopt;
+                                });
 }
 
 // "pendulum/libration-90/rk4" -> "pendulumXlibrationX90Xrk4" (GoogleTest names are alphanumeric).

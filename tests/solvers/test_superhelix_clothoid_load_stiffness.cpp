@@ -7,7 +7,8 @@
 //
 // Tolerances: forward mode and complex step are both exact to round-off, so first derivatives agree
 // to a few hundred eps of their size (sums of ~40 series terms over up to 4 sub-intervals). A
-// central difference with step h = 1e-5 on O(1) derivatives errs by h^2/6 |f'''| + eps |f| / h
+// central difference with step h = 1e-5 (central_difference_jacobian's for the rod, eps^(1/3) max(|q|,
+// 1/L), is 6e-6 .. 8e-6 here) on O(1) derivatives errs by h^2/6 |f'''| + eps |f| / h
 // ~ 2e-11 + 2e-11; the gates use 1e-8 relative to the largest entry (a factor ~250 above that, for
 // third derivatives up to ~40 at the strongly curved states here). A wrong term (sign, factor, a
 // missing chain-rule column) is O(1) relative.
@@ -155,15 +156,10 @@ TEST(SuperClothoidLoadStiffness, MatchesCentralDifferencesOfTheGeneralisedForce)
     const sh::RodModel model = loaded_rod(moment);
     const VecX q = curled_state(model.elements);
     const MatX exact = sh::clothoid_load_stiffness(model, sh::ClothoidKinematics(model, q), 0.7);
-    MatX differences(exact.rows(), exact.cols());
-    for (Eigen::Index k = 0; k < q.size(); ++k) {
-      VecX plus = q, minus = q;
-      plus[k] += kStep;
-      minus[k] -= kStep;
-      differences.col(k) = (sh::clothoid_external_force(model, sh::ClothoidKinematics(model, plus), 0.7) -
-                            sh::clothoid_external_force(model, sh::ClothoidKinematics(model, minus), 0.7)) /
-                           (2 * kStep);
-    }
+    const sh::StaticResidual force = [&model](const VecX& x, double lambda) {
+      return sh::clothoid_external_force(model, sh::ClothoidKinematics(model, x), lambda);
+    };
+    const MatX differences = sh::central_difference_jacobian(force, q, 0.7, model.length);
     const double largest = exact.cwiseAbs().maxCoeff();
     EXPECT_LE((exact - differences).cwiseAbs().maxCoeff(), kDifferenceTolerance * largest) << "end moment " << moment;
     // Conservative loads: symmetric to round-off (O(N^2) sums of products: 1e3 eps); the dead end

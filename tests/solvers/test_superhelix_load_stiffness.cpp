@@ -4,7 +4,8 @@
 // maps, no second-derivative code).
 //
 // Tolerance of a central difference with step h on a function of O(1) derivatives: truncation
-// h^2/6 |f'''| plus rounding eps |f| / h. With h = 1e-5 (in units where q ell ~ 1): ~2e-11 + 2e-11;
+// h^2/6 |f'''| plus rounding eps |f| / h. With h = 1e-5 (in units where q ell ~ 1; the rod-level checks take
+// central_difference_jacobian's eps^(1/3) max(|q|, 1/L), 4e-6 .. 8e-6 here): ~2e-11 + 2e-11;
 // the gates use 1e-8 relative to the largest entry (a factor ~250 above that estimate, for third
 // derivatives of size up to ~40 at the strongly curved states below), and a wrong term of any
 // load (a missing sign or factor) is O(1) relative.
@@ -85,15 +86,10 @@ TEST(SuperHelixLoadStiffness, MatchesCentralDifferencesOfTheGeneralisedForce) {
     const sh::RodModel model = loaded_rod(moment);
     const VecX q = curled_state(model.elements);
     const MatX exact = sh::load_stiffness(model, sh::Kinematics(model, q), 0.7);
-    MatX differences(exact.rows(), exact.cols());
-    for (Eigen::Index k = 0; k < q.size(); ++k) {
-      VecX plus = q, minus = q;
-      plus[k] += kStep;
-      minus[k] -= kStep;
-      differences.col(k) = (sh::external_generalised_force(model, sh::Kinematics(model, plus), 0.7) -
-                            sh::external_generalised_force(model, sh::Kinematics(model, minus), 0.7)) /
-                           (2 * kStep);
-    }
+    const sh::StaticResidual force = [&model](const VecX& x, double lambda) {
+      return sh::external_generalised_force(model, sh::Kinematics(model, x), lambda);
+    };
+    const MatX differences = sh::central_difference_jacobian(force, q, 0.7, model.length);
     const double largest = exact.cwiseAbs().maxCoeff();
     EXPECT_LE((exact - differences).cwiseAbs().maxCoeff(), kDifferenceTolerance * largest) << "end moment " << moment;
     // Conservative loads: symmetric to round-off (O(N^2) sums of products: 1e3 eps); the dead end
