@@ -12,7 +12,7 @@
 // looseness epsilon = h sqrt(T/B) (default 0.1; the loop is then about 40 radii long), C/B and the
 // barrier stiffness k = kappa T / h^2 (an overlap of about h/sqrt(kappa) at a contact force T).
 // Measured (N = 50, 100, 200, 400): max |H - T|/T = 0.396, 0.163, 0.0725, 0.0286, observed orders
-// 1.28, 1.17, 1.34 (before the statics shrank the pseudo-time step on capped steps: 0.363, 0.164, 0.0726,
+// 1.28, 1.17, 1.34 (the same since the levels above 100 edges refine the 100-edge knot; before the statics shrank the pseudo-time step on capped steps: 0.363, 0.164, 0.0726,
 // 0.0277; another machine then: 0.434, 0.146, 0.0725, 0.0280 - the coarse knots stop on slightly
 // different equilibria when the path differs in its last bits): first order, as PHYSICS.md §5.1 expects of contact forces lumped at vertices;
 // the barrier's own error (V_eff, ~ f^2/k) is below it (k ten times larger or smaller changes the
