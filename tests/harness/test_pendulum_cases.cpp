@@ -12,6 +12,7 @@
 #include "case_test_support.hpp"
 #include "pendulum/one_step_map.hpp"
 #include "rodvv/common/errors.hpp"
+#include "rodvv/testing/input_error.hpp"
 
 namespace {
 
@@ -81,8 +82,15 @@ TEST(PendulumGatesHaveTeeth, EnergyContrastSeparatesSymplecticFromNot) {
 TEST(PendulumCases, RejectInvalidParameters) {
   const Case& rotation = named("pendulum/rotation/rk4");
   Parameters parameters = rotation.info.parameters;
-  EXPECT_THROW(apply_assignment(parameters, "v0_over_omega=1.5"), rodvv::InputError);
-  EXPECT_THROW(apply_assignment(parameters, "omega=-1"), rodvv::InputError);
+  EXPECT_THROW(apply_assignment(parameters, "g=-1"), rodvv::InputError);
+  EXPECT_THROW(apply_assignment(parameters, "length=0"), rodvv::InputError);
+  // v0 below 2 omega is a libration, not a rotation: the window on v0 / omega refuses it, naming v0.
+  apply_assignment(parameters, "v0=4.05");  // 1.5 omega
+  EXPECT_EQ(rodvv::testing::input_error_parameter_of([&] { rotation.check_parameters(parameters); }), "v0");
+  Parameters separatrix = named("pendulum/separatrix/rk4").info.parameters;
+  apply_assignment(separatrix, "t_end=3.4");  // omega t_end = 9.2 > 6
+  EXPECT_EQ(rodvv::testing::input_error_parameter_of([&] { named("pendulum/separatrix/rk4").check_parameters(separatrix); }),
+            "t_end");
   Parameters libration = named("pendulum/libration-90/rk4").info.parameters;
   EXPECT_THROW(apply_assignment(libration, "theta0_deg=180"), rodvv::InputError);
   EXPECT_THROW(apply_assignment(libration, "periods=0"), rodvv::InputError);
@@ -92,24 +100,29 @@ TEST(PendulumCases, RejectInvalidParameters) {
 
 namespace {
 
-// The cases state everything in the time unit 1/omega (pendulum_cases.cpp, Units): their results
-// do not depend on omega beyond round-off, and their measured bounds are evaluated, not skipped, at
-// another omega. A solver that used omega where it needs omega^2 would be right at omega = 1 only;
-// at the default omega = 2.7 its error would be O(1).
-TEST(PendulumUnits, ResultsDoNotDependOnOmega) {
+// The cases state everything in the time unit 1/omega, omega = sqrt(g/l) (pendulum_cases.cpp, Units): a
+// libration's results do not depend on g or l beyond round-off, and its measured bounds are evaluated, not
+// skipped, at another g and l. A solver that used omega where it needs omega^2 would be right at omega = 1
+// only; at the default omega = 2.7 its error would be O(1).
+TEST(PendulumUnits, LibrationResultsDoNotDependOnGOrL) {
   // Round-off of ~1e3 steps relative to errors >= 1e-7: 1e-6 relative is a wide margin.
-  rodvv::testing::expect_results_free_of_units(named("pendulum/libration-90/stormer-verlet"), {{"omega", 0.37}}, 1e-6,
+  rodvv::testing::expect_results_free_of_units(named("pendulum/libration-90/stormer-verlet"), {{"g", 0.37}}, 1e-6,
                                                0.0);
+  rodvv::testing::expect_results_free_of_units(named("pendulum/libration-90/stormer-verlet"),
+                                               {{"g", 41.0}, {"length", 0.02}}, 1e-6, 0.0);
 }
 
-// dopri5's tolerance mixes theta and theta' (rad/time): omega is not a unit scale there, and its
-// measured bounds are skipped at another omega.
-TEST(PendulumUnits, AdaptiveToleranceIsNotOmegaFree) {
-  const Case& c = named("pendulum/libration-90/dopri5");
-  Parameters other = c.info.parameters;
-  set_parameter(other, "omega", 0.37);
-  const auto result = run_sweep(c, other, c.info.resolution.default_levels);
-  EXPECT_FALSE(result.skipped_gates.empty());
+// The rotation's start rate v0 is physical: at another g it is another v0 / omega, another problem, so its
+// measured bounds are skipped there. dopri5's tolerance mixes theta and theta' (rad/time): g and l are not
+// unit scales there either.
+TEST(PendulumUnits, PhysicalRatesAndTheAdaptiveToleranceAreNotUnitFree) {
+  for (const char* name : {"pendulum/libration-90/dopri5", "pendulum/rotation/rk4"}) {
+    const Case& c = named(name);
+    Parameters other = c.info.parameters;
+    set_parameter(other, "g", 9.0);
+    const auto result = run_sweep(c, other, c.info.resolution.default_levels);
+    EXPECT_FALSE(result.skipped_gates.empty()) << name;
+  }
 }
 
 }  // namespace

@@ -60,7 +60,12 @@ INSTANTIATE_TEST_SUITE_P(
                       // The knots' relaxations stop at a residual of about 1e-9 of the load: their metrics agree
                       // to 1e-6 (measured 6e-7 on the Super-Helix's H deviation).
                       UnitsCase{"knot/trefoil-nodal", kKnotRoundOff, 1e-5},
-                      UnitsCase{"knot/trefoil-superhelix", kKnotRoundOff, 1e-5}),
+                      UnitsCase{"knot/trefoil-superhelix", kKnotRoundOff, 1e-5},
+                      // The pendulum's g, l and its inputs in time units (the start rate v0, the horizon t_end):
+                      // fixed steps in units of 1/omega, errors in rad and in units of 1/omega.
+                      UnitsCase{"pendulum/rotation/rk4", {"steps"}},
+                      UnitsCase{"pendulum/separatrix/stormer-verlet", {"steps"}},
+                      UnitsCase{"pendulum/libration-179/explicit-euler", {"steps"}}),
     [](const ::testing::TestParamInfo<UnitsCase>& param_info) {
       return rodvv::testing::test_name_of_case(param_info.param.name);
     });

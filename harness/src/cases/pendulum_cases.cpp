@@ -17,14 +17,19 @@
 //   periods; a bounded energy error (late/early deviation ratio ~ 1) for symplectic methods, a
 //   secular drift (ratio >> 1) for RK4 and explicit Euler.
 //
-// Units. Every case runs at omega = 2.7, not 1: at omega = 1 a solver that uses omega where it
-// needs omega^2 (or 1/omega for omega) is right. The problem has one time scale, 1/omega, and the
-// cases state everything in it: the step is omega dt, the separatrix horizon omega t_end, the
-// period omega T, rates theta'/omega, energies E/omega^2. Their results are therefore independent of
-// omega up to round-off, omega is a unit scale (case_info.hpp: Parameter::unit_scale), and a bound
-// measured at the defaults holds at any omega. Not for dopri5: its controller's tolerance applies to
-// theta (rad) and theta' (rad/time) alike, so its error per tolerance depends on omega.
+// Units. The cases take the pendulum's g and l (pendulum/scales.hpp) and run at omega = sqrt(g/l) =
+// 2.7, not 1: at omega = 1 a solver that uses omega where it needs omega^2 (or 1/omega for omega) is
+// right. The problem has one time scale, 1/omega, and the cases state everything in it: the step is
+// omega dt, the period omega T, rates theta'/omega, energies E/omega^2; the physical inputs in time
+// units (the rotation's start rate v0, the separatrix horizon t_end, dopri5's output interval) are
+// parameters with windows on their groups with omega (v0/omega, omega t_end, omega dt_out). The
+// librations' results are therefore independent of g and l up to round-off, both are unit scales
+// (case_info.hpp: Parameter::unit_scale), and a bound measured at the defaults holds at any g and l.
+// Not for the rotation and the separatrix, whose v0 and t_end are physical (another g is another
+// v0/omega), nor for dopri5: its controller's tolerance applies to theta (rad) and theta' (rad/time)
+// alike, so its error per tolerance depends on omega.
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -34,6 +39,7 @@
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
 #include "pendulum/one_step_map.hpp"
+#include "pendulum/scales.hpp"
 #include "pendulum_levels.hpp"
 #include "rodvv/harness/registry.hpp"
 #include "rodvv/harness/trajectory_metrics.hpp"
@@ -50,7 +56,7 @@ namespace pend = rodvv::solvers::pendulum;
 constexpr double kPi = std::numbers::pi;
 constexpr double kBoundedGrowth = 2.0;
 constexpr double kDriftGrowth = 10.0;
-constexpr double kDefaultOmega = 2.7;  // not 1 (see Units above)
+constexpr double kDefaultOmega = 2.7;  // sqrt(g/l) at the default g and l (pendulum/scales.hpp)
 // The separatrix approaches the unstable equilibrium as e^(-omega t), and errors grow as e^(omega t):
 // beyond omega t_end = 6 the default levels are no longer asymptotic for every method (measured at
 // omega t_end = 8: explicit Euler leaves its window; at 10 its order is 0.50, symplectic Euler's 2.0
@@ -86,7 +92,7 @@ struct Motion {
   std::string id;
   MotionKind kind;
   std::string title;
-  double amplitude;  // theta0 [deg] (libration), v0 (rotation), unused (separatrix)
+  double amplitude;  // theta0 [deg] (libration), v0 / omega (rotation), unused (separatrix)
   double horizon;    // periods (libration), turns (rotation), omega t_end (separatrix)
   Range amplitude_range;
   Range horizon_range;
@@ -108,25 +114,16 @@ const std::vector<Motion>& motions() {
   return list;
 }
 
-// omega is a unit scale for the fixed-step methods (any omega > 0). Not for dopri5, whose tolerance mixes
-// rad and rad/time: from omega = 0.3 (at 0.1 and 0.027 its order leaves the window on libration-179 and
-// rotation; 0.3 .. 1e6 pass on every motion, measured 2026-11-26).
-Parameter omega_parameter(bool unit_scale) {
-  Parameter omega = unit_scale ? make_parameter("omega", kDefaultOmega, 0.0, 1e6, true, false, "1/time",
-                                                "natural frequency sqrt(g/l)")
-                               : make_parameter("omega", kDefaultOmega, 0.3, 1e6, false, false, "1/time",
-                                                "natural frequency sqrt(g/l)");
-  omega.unit_scale = unit_scale;
-  return omega;
-}
-
 Parameter ranged_parameter(const std::string& name, double value, const Range& range, const char* unit,
                            const char* description) {
   return make_parameter(name, value, range.min, range.max, range.min_open, range.max_open, unit, description);
 }
 
-Parameters motion_parameters(const Motion& motion, bool omega_is_unit_scale) {
-  Parameters parameters{omega_parameter(omega_is_unit_scale)};
+// g and l are unit scales where every other input is dimensionless: the librations with a fixed step.
+bool scales_are_units(const Motion& motion, bool adaptive) { return !adaptive && motion.kind == MotionKind::Libration; }
+
+Parameters motion_parameters(const Motion& motion, bool adaptive) {
+  Parameters parameters = pendulum_cases::frequency_parameters(scales_are_units(motion, adaptive));
   switch (motion.kind) {
     case MotionKind::Libration:
       parameters.push_back(ranged_parameter("theta0_deg", motion.amplitude, motion.amplitude_range, "deg",
@@ -135,26 +132,50 @@ Parameters motion_parameters(const Motion& motion, bool omega_is_unit_scale) {
                                             "integration horizon in periods 4K(k)/omega"));
       break;
     case MotionKind::Rotation:
-      parameters.push_back(ranged_parameter("v0_over_omega", motion.amplitude, motion.amplitude_range, "",
-                                            "initial rate theta'(0) / omega (> 2 for rotation)"));
+      parameters.push_back(make_parameter("v0", motion.amplitude * kDefaultOmega, 0.0, 1e12, true, false,
+                                          "rad/time", "initial rate theta'(0) (> 2 omega for rotation)"));
       parameters.push_back(ranged_parameter("turns", motion.horizon, motion.horizon_range, "",
                                             "integration horizon in full turns"));
       break;
     case MotionKind::Separatrix:
-      parameters.push_back(ranged_parameter("omega_t_end", motion.horizon, motion.horizon_range, "1/omega",
-                                            "integration horizon in units of 1/omega"));
+      parameters.push_back(make_parameter("t_end", motion.horizon / kDefaultOmega, 0.0, 1e12, true, false, "time",
+                                          "integration horizon"));
       break;
   }
   return parameters;
 }
 
+// The windows on the groups with omega of the physical inputs in time units (see Units, and the ranges
+// above); dopri5's omega from 0.3 (at 0.1 and 0.027 its order leaves the window on libration-179 and
+// rotation; 0.3 .. 1e6 pass on every motion, measured 2026-11-26 with omega a parameter).
+void require_motion_windows(Case& c, const Motion& motion, bool adaptive) {
+  using pendulum_cases::frequency_group_window;
+  if (motion.kind == MotionKind::Rotation)
+    cases::require(c, frequency_group_window("v0", -1, motion.amplitude_range.min, motion.amplitude_range.max,
+                                             "a rotation, away from the separatrix at 2, where the levels resolve it"));
+  if (motion.kind == MotionKind::Separatrix)
+    cases::require(c, frequency_group_window("t_end", 1, motion.horizon_range.min, motion.horizon_range.max,
+                                             "where the levels of every method are asymptotic"));
+  if (adaptive) {
+    cases::require(c, frequency_group_window("output_dt", 1, 0.0, 1.0, "dense output at least once per 1/omega"));
+    cases::require(c, {"omega = sqrt(g/l) >= 0.3 (where dopri5's tolerance, which mixes rad and rad/time, was measured)",
+                       [](const Parameters& p) {
+                         const double omega = pendulum_cases::natural_frequency(p);
+                         if (!cases::inside(omega, 0.3, std::numeric_limits<double>::infinity()))
+                           throw InputError("g", fmt::format("invalid parameters: omega = sqrt(g/l) = {} must be >= 0.3 "
+                                                             "(where dopri5's tolerance, which mixes rad and rad/time, "
+                                                             "was measured)", format_value(omega)));
+                       }});
+  }
+}
+
 ref::PendulumMotion reference_motion(const Motion& motion, const Parameters& parameters) {
-  const double omega = parameter_value(parameters, "omega");
+  const double omega = pendulum_cases::natural_frequency(parameters);
   switch (motion.kind) {
     case MotionKind::Libration:
       return ref::Libration{omega, parameter_value(parameters, "theta0_deg") * kPi / 180.0};
     case MotionKind::Rotation:
-      return ref::Rotation{omega, parameter_value(parameters, "v0_over_omega") * omega};
+      return ref::Rotation{omega, parameter_value(parameters, "v0")};
     case MotionKind::Separatrix:
       return ref::Separatrix{omega};
   }
@@ -166,7 +187,7 @@ double horizon_time(const Motion& motion, const Parameters& parameters,
   switch (motion.kind) {
     case MotionKind::Libration: return parameter_value(parameters, "periods") * *ref::period(exact);
     case MotionKind::Rotation: return parameter_value(parameters, "turns") * *ref::period(exact);
-    case MotionKind::Separatrix: return parameter_value(parameters, "omega_t_end") / ref::omega_of(exact);
+    case MotionKind::Separatrix: return parameter_value(parameters, "t_end");
   }
   throw std::logic_error("unknown motion kind");
 }
@@ -219,7 +240,7 @@ Solution solve_accuracy_level(const Motion& motion, const pend::MethodInfo& meth
   pend::Settings settings;
   settings.method = method.method;
   if (method.adaptive) {
-    settings.dt = parameter_value(parameters, "omega_output_dt") / omega;
+    settings.dt = parameter_value(parameters, "output_dt");
     settings.tolerance = level;
   } else {
     settings.dt = level / omega;  // the level is omega dt
@@ -307,12 +328,12 @@ Case accuracy_case(const Motion& motion, const pend::MethodInfo& method) {
   info.citation = kCitation;
   info.method = fmt::format("{} (order {}{}); {}", method.name, method.order,
                             method.symplectic ? ", symplectic" : "", method.citation);
-  info.parameters = motion_parameters(motion, !method.adaptive);
+  info.parameters = motion_parameters(motion, method.adaptive);
   const LevelPlan plan = pendulum_level_plan(motion.id, method.id, method.order);
   const auto order = static_cast<double>(method.order);
   if (method.adaptive) {
-    info.parameters.push_back(make_parameter("omega_output_dt", 0.005, 0.0, 1.0, true, false, "1/omega",
-                                             "dense-output sampling interval in units of 1/omega"));
+    info.parameters.push_back(make_parameter("output_dt", 0.005 / kDefaultOmega, 0.0, 1e12, true, false, "time",
+                                             "dense-output sampling interval"));
     info.resolution = {"tol", "absolute = relative error tolerance of the step-size controller",
                        ResolutionScale::StepSize, plan.levels, plan.extended_levels};
   } else {
@@ -369,6 +390,7 @@ Case accuracy_case(const Motion& motion, const pend::MethodInfo& method) {
   c.check_parameters = [motion](const Parameters& parameters) {
     (void)ref::energy(reference_motion(motion, parameters));  // references validate the motion
   };
+  require_motion_windows(c, motion, method.adaptive);
   split_level(
       c,
       [motion, method](const Parameters& parameters, double level) {
@@ -383,7 +405,7 @@ Case accuracy_case(const Motion& motion, const pend::MethodInfo& method) {
 // ---- long-time energy ---------------------------------------------------------------------------
 
 LevelOutput run_energy_level(const pend::MethodInfo& method, const Parameters& parameters, double omega_dt) {
-  const ref::Libration exact{parameter_value(parameters, "omega"),
+  const ref::Libration exact{pendulum_cases::natural_frequency(parameters),
                              parameter_value(parameters, "theta0_deg") * kPi / 180.0};
   const double dt = omega_dt / exact.omega;
   const double energy_unit = exact.omega * exact.omega;
@@ -429,13 +451,14 @@ Case energy_case(const pend::MethodInfo& method) {
   info.citation = "Hairer, Lubich & Wanner, Geometric Numerical Integration, 2nd ed., Springer 2006, ch. IX";
   info.method = fmt::format("{} (order {}{})", method.name, method.order,
                             method.symplectic ? ", symplectic" : ", not symplectic");
-  info.parameters = {
-      omega_parameter(true),
+  info.parameters = pendulum_cases::frequency_parameters(true);
+  info.parameters.insert(info.parameters.end(), {
+      // g and l: unit scales (the levels are omega dt, the horizon in periods).
       // Measured like the accuracy cases' ranges: RKN4's energy error is round-off at 0.01 deg, RK4's drift
       // is not yet 10x its early value at 20 periods, and 1e5 periods overran (3e4 passes with every method).
       make_parameter("theta0_deg", 90.0, 1.0, 179.0, false, false, "deg", "release angle"),
       make_parameter("periods", 1000.0, 50.0, 3e4, false, false, "", "integration horizon in periods"),
-  };
+  });
   const LevelPlan plan = pendulum_level_plan("long-time-energy", method.id, method.order);
   info.resolution = {"omega_dt", "time step in units of 1/omega", ResolutionScale::StepSize, plan.levels,
                      plan.extended_levels};
@@ -463,7 +486,7 @@ Case energy_case(const pend::MethodInfo& method) {
                                        "tenfold"));
   }
   c.check_parameters = [](const Parameters& parameters) {
-    (void)ref::libration_period({parameter_value(parameters, "omega"),
+    (void)ref::libration_period({pendulum_cases::natural_frequency(parameters),
                                  parameter_value(parameters, "theta0_deg") * kPi / 180.0});
   };
   c.run_level = [method](const Parameters& parameters, double level) {

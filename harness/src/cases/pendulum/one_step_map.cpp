@@ -15,6 +15,7 @@
 //  - nearest_other_map: min over the other maps the oracle knows of max_ij |M_measured - M_other|_ij,
 //    in eps (a diagnostic: the margin by which the identification is decisive).
 #include "one_step_map.hpp"
+#include "scales.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -128,7 +129,7 @@ Matrix2d measured_step_map(pend::Method method, double omega, double dt) {
 namespace {
 
 LevelOutput run(pend::Method method, const Parameters& p, double omega_dt) {
-  const double omega = parameter_value(p, "omega");
+  const double omega = natural_frequency(p);
   const Matrix2d measured = measured_step_map(method, omega, omega_dt / omega);
   const StepMap documented = documented_map(method);
   double nearest_other = std::numeric_limits<double>::infinity();
@@ -161,8 +162,8 @@ double measured_local_error(pend::Method method) {
 Case one_step_map_case(const pend::MethodInfo& method) {
   const StepMap documented = documented_map(method.method);
   const double local_order = method.order + 1.0;
-  Parameter omega = make_parameter("omega", 2.7, 0.0, 1e6, true, false, "1/time", "natural frequency sqrt(g/l)");
-  omega.unit_scale = true;  // the map on z = (theta, theta'/omega) depends on omega dt alone
+  // g and l: unit scales, the map on z = (theta, theta'/omega) depends on omega dt alone.
+  const Parameters scales = frequency_parameters(true);
   std::vector<GateSpec> gates{
       upper_bound_gate("map_error", kMapErrorBound, GateScope::AllLevels,
                        "the documented map to round-off: about 12 roundings of each entry on either side (file "
@@ -187,7 +188,7 @@ Case one_step_map_case(const pend::MethodInfo& method) {
        "Hairer, Lubich & Wanner, Geometric Numerical Integration, 2nd ed. 2006, §I.1, §VI.3; McLachlan 1995 (SIAM J. "
        "Sci. Comput. 16:151) for SB3A",
        fmt::format("{} (order {}); {}", method.name, method.order, method.citation), "pendulum/one-step-map"},
-      {omega}, std::move(resolution),
+      scales, std::move(resolution),
       {invariant_metric("map_error", "max_ij |M - M_documented| in eps"),
        invariant_metric("local_error", "max_ij |M - exp(omega dt A)|: the error of one step", local_order),
        diagnostic_metric("nearest_other_map", "min over the oracle's other maps of max_ij |M - M_other|, in eps")},
