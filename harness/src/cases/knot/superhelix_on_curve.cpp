@@ -56,7 +56,11 @@ LaidSuperHelix superhelix_on_curve(const std::vector<Vec3>& curve, std::size_t e
       const solvers::superhelix::ElementMaps maps = solvers::superhelix::element_maps(q, ell);
       const Vec3 miss = p + R * (maps.G * Vec3::UnitX()) - target;
       Eigen::Matrix<double, 3, 2> J = R * maps.dG0.rightCols<2>();
-      Eigen::Vector2d step = (J.transpose() * J + 1e-12 * Eigen::Matrix2d::Identity()).ldlt().solve(-J.transpose() * miss);
+      // Damped by 1e-12 of the normal matrix's own size (its entries are ~ ell^4: an absolute 1e-12 swamped
+      // them below ell ~ 1e-3, and a knot tied at T = 1e6 was laid off its curve and came undone).
+      const Eigen::Matrix2d normal_matrix = J.transpose() * J;
+      const double damping = 1e-12 * normal_matrix.trace();
+      Eigen::Vector2d step = (normal_matrix + damping * Eigen::Matrix2d::Identity()).ldlt().solve(-J.transpose() * miss);
       const double turn = (q.tail<2>() + step).norm() * ell;
       if (turn > kMaxTurn) step = (q.tail<2>() + step) * (kMaxTurn / turn) - q.tail<2>();
       q.tail<2>() += step;
