@@ -102,7 +102,7 @@ TEST(Rod3dRefine, ASmoothTwistedRodIsReproducedAtThirdOrderInPositionAndSecondIn
   EXPECT_NEAR(observed_order(edges, director), 2.0, 0.25) << director[0] << " " << director[1] << " " << director[2];
   EXPECT_LE(position.back(), 2.0 * 1.3e-7);
   EXPECT_LE(director.back(), 2.0 * 2.4e-5);
-  // Linear multipliers are reproduced: the interpolant is exact for cubics.
+  // Linear multipliers are reproduced: the interpolant is exact for quadratics.
   for (double gap : multiplier) EXPECT_LE(gap, 1e-14);
 }
 

@@ -1,8 +1,6 @@
 #include "nodal_trefoil.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <string>
 
@@ -10,7 +8,6 @@
 #include "contact_profile.hpp"
 #include "knot_cases.hpp"
 #include "rodvv/common/errors.hpp"
-#include "rodvv/solvers/rod3d/refine.hpp"
 #include "rodvv/solvers/rod3d/refine.hpp"
 #include "rodvv/solvers/rod3d/self_contact.hpp"
 #include "rodvv/solvers/rod3d/solution.hpp"

@@ -15,7 +15,7 @@ namespace rodvv::solvers::rod3d {
 // length and end supports, the fine one with at least as many edges:
 //  - positions: the cubic Hermite interpolant (Catmull-Rom tangents, one-sided second-order at the
 //    ends) of the coarse vertices in their rest arclength (model.hpp: vertex_arclength), evaluated
-//    at the fine vertices' - exact for a cubic centreline, O(ebar_coarse^3) away from the ends;
+//    at the fine vertices' - exact for a quadratic centreline, else O(ebar_coarse^3);
 //  - material frames: the coarse material angle of each edge measured from the space-parallel
 //    transport of edge 0's material director along the coarse rod (accumulated, so any number of
 //    turns carries over), interpolated alike at the fine edges' midpoints, and applied from the same
