@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -12,7 +13,7 @@ namespace rodvv::solvers::rod3d {
 
 namespace {
 
-constexpr double kEps = 2.220446049250313e-16;
+constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 // The cubic Hermite interpolant of values v_k at uniformly spaced abscissae x_k = x0 + k dx, with
 // Catmull-Rom tangents (v_{k+1} - v_{k-1}) / 2 inside and the one-sided (-3 v_0 + 4 v_1 - v_2) / 2 at

@@ -1,7 +1,6 @@
 #include "scales.hpp"
 
 #include <cmath>
-#include <limits>
 
 #include <fmt/format.h>
 
