@@ -14,6 +14,7 @@
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/time_budget.hpp"
 #include "rodvv/common/validation.hpp"
+#include "block_gauss_seidel.hpp"
 
 namespace rodvv::solvers::contact {
 
@@ -23,7 +24,9 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr int kPhiIntervals = 256;
 constexpr double kWarmBracket = 0.05;  // radians
 
-double tangential_norm(const Vec3& x) { return std::hypot(x[1], x[2]); }
+// sqrt, not hypot: the Gauss-Seidel's innermost call (hypot was 12 % of a bundle's solve); forces and
+// velocities of contact problems are far from the squares' overflow.
+double tangential_norm(const Vec3& x) { return std::sqrt(x[1] * x[1] + x[2] * x[2]); }
 
 // The velocity the cone law pairs with r: u + mu |u_T| e_N (Coulomb, De Saxce) or u (SOC).
 Vec3 paired_velocity(const Vec3& u, double mu, ConeLaw law) {
@@ -82,10 +85,14 @@ Boundary boundary_solution(const Mat3& W, const Vec3& b, double mu, ConeLaw law,
     if ((f_low < 0.0 && f_high > 0.0) || (f_low > 0.0 && f_high < 0.0)) refine(low, high, f_low, f_high);
     if (best.found) return best;
   }
-  double previous_phi = 0.0, previous = consistency(0.0);
+  // The scan closes on the value at 0 (the function is 2 pi-periodic): evaluated at 2 pi, sin(2 pi) =
+  // -2.4e-16 != sin(0) could put a root within 1e-16 of 0 (a planar problem, b_T2 = 0: the function is
+  // odd about 0 and pi) between the two ends, where no interval sees its sign change.
+  const double first = consistency(0.0);
+  double previous_phi = 0.0, previous = first;
   for (int i = 1; i <= kPhiIntervals; ++i) {
     const double phi = 2.0 * std::numbers::pi * i / kPhiIntervals;
-    const double value = consistency(phi);
+    const double value = i == kPhiIntervals ? first : consistency(phi);
     if (previous == 0.0) consider(previous_phi);
     if ((previous < 0.0 && value > 0.0) || (previous > 0.0 && value < 0.0)) refine(previous_phi, phi, previous, value);
     previous_phi = phi;
@@ -124,6 +131,16 @@ void validate_problem(const MatX& W, const VecX& b, const VecX& mu) {
   }
 }
 
+// The dense W as block_gauss_seidel.hpp's operator.
+struct DenseDelassus {
+  const MatX& W;
+  Eigen::Index contacts() const { return W.rows() / 3; }
+  Mat3 block(Eigen::Index k) const { return W.block<3, 3>(3 * k, 3 * k); }
+  Vec3 product(Eigen::Index k, const VecX& r) const { return W.middleRows(3 * k, 3) * r; }
+  void changed(Eigen::Index, const Vec3&) const {}
+  VecX velocities(const VecX& r) const { return W * r; }
+};
+
 }  // namespace
 
 Vec3 project_onto_friction_cone(const Vec3& x, double mu) {
@@ -147,59 +164,21 @@ Vec3 solve_local_cone_problem(const Mat3& W, const Vec3& b, double mu, ConeLaw l
   return slide.r;
 }
 
+double contact_natural_map(const Mat3& W_kk, const Vec3& r, const Vec3& u, double mu, ConeLaw law) {
+  const double rho = 1.0 / W_kk.norm();
+  return (r - project_onto_friction_cone(r - rho * paired_velocity(u, mu, law), mu)).norm();
+}
+
 double cone_residual(const MatX& W, const VecX& b, const VecX& mu, const VecX& r, ConeLaw law) {
-  const VecX u = W * r + b;
-  double worst = 0.0, scale = 0.0;
-  for (Eigen::Index k = 0; k < mu.size(); ++k) {
-    const Mat3 block = W.block<3, 3>(3 * k, 3 * k);
-    const double rho = 1.0 / block.norm();
-    scale = std::max(scale, b.segment<3>(3 * k).norm() * rho);
-    const Vec3 rk = r.segment<3>(3 * k);
-    const Vec3 v = paired_velocity(u.segment<3>(3 * k), mu[k], law);
-    worst = std::max(worst, (rk - project_onto_friction_cone(rk - rho * v, mu[k])).norm());
-  }
-  return scale > 0.0 ? worst / scale : worst;
+  const DenseDelassus op{W};
+  return detail::natural_map_residual(op, b, mu, r, VecX(W * r + b), law);
 }
 
 ConeSolution solve_cone_complementarity(const MatX& W, const VecX& b, const VecX& mu, ConeLaw law,
                                         const ConeSettings& settings) {
   validate_problem(W, b, mu);
-  require_open_interval("tolerance", settings.tolerance, 0.0, 1.0);
-  require_at_least("max_sweeps", settings.max_sweeps, 1);
-
-  const Eigen::Index n = mu.size();
-  const char* method = law == ConeLaw::Coulomb ? "block Gauss-Seidel (Coulomb)" : "block Gauss-Seidel (SOC)";
-  ConeSolution solution;
-  solution.r = VecX::Zero(3 * n);
-  double scale = 0.0;
-  for (Eigen::Index k = 0; k < n; ++k) scale = std::max(scale, b.segment<3>(3 * k).norm() / W.block<3, 3>(3 * k, 3 * k).norm());
-  if (n == 0 || scale == 0.0) {  // no contact, or nothing pushes: r = 0 is the solution
-    solution.u = b;
-    return solution;
-  }
-  for (std::size_t sweep = 1; sweep <= settings.max_sweeps; ++sweep) {
-    for (Eigen::Index k = 0; k < n; ++k) {
-      const Mat3 block = W.block<3, 3>(3 * k, 3 * k);
-      const Vec3 previous = solution.r.segment<3>(3 * k);
-      const Vec3 local_b = b.segment<3>(3 * k) + W.middleRows(3 * k, 3) * solution.r - block * previous;
-      solution.r.segment<3>(3 * k) = solve_local_cone_problem(block, local_b, mu[k], law, &previous);
-    }
-    solution.sweeps = sweep;
-    solution.residual = cone_residual(W, b, mu, solution.r, law);
-    check_time_budget(method, sweep, solution.residual);
-    if (solution.residual <= settings.tolerance) break;
-    if (sweep == settings.max_sweeps)
-      throw SolverError(method, "no convergence in " + std::to_string(sweep) + " sweeps (natural-map residual " +
-                                    format_value(solution.residual) + " > tolerance " +
-                                    format_value(settings.tolerance) + ")",
-                        sweep, solution.residual);
-  }
-  solution.u = W * solution.r + b;
-  for (Eigen::Index k = 0; k < n; ++k) {
-    const Vec3 rk = solution.r.segment<3>(3 * k);
-    solution.cone_violation = std::max(solution.cone_violation, std::max(0.0, tangential_norm(rk) - mu[k] * rk[0]) / scale);
-  }
-  return solution;
+  DenseDelassus op{W};
+  return detail::block_gauss_seidel(op, b, mu, law, settings);
 }
 
 }  // namespace rodvv::solvers::contact

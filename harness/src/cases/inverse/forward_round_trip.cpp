@@ -13,7 +13,7 @@
 
 namespace rodvv::harness::inverse_cases {
 
-void add_round_trip_metrics(LevelOutput& out, const solvers::superhelix::RodModel& rest, const VecX& q) {
+RoundTrip forward_round_trip(const solvers::superhelix::RodModel& rest, const VecX& q) {
   namespace sh = solvers::superhelix;
   constexpr double kEps = std::numeric_limits<double>::epsilon();
   sh::StaticOptions options;
@@ -36,10 +36,18 @@ void add_round_trip_metrics(LevelOutput& out, const solvers::superhelix::RodMode
   const MatX inverse_jacobian = sh::static_jacobian(rest, q).partialPivLu().inverse();
   const double conditioned = kEps * inverse_jacobian.cwiseAbs().rowwise().sum().maxCoeff() * scale;
   const double error = (found - q).lpNorm<Eigen::Infinity>();
-  out.metrics["round_trip_error"] = cases::value_sample(error / conditioned, 1.0);
-  out.metrics["round_trip_error_relative"] = cases::diagnostic(error / q.lpNorm<Eigen::Infinity>());
-  out.metrics["equilibrium_residual"] =
-      cases::value_sample(sh::static_residual(rest, q).lpNorm<Eigen::Infinity>() / (kEps * scale), 1.0);
+  return {error / conditioned, error / q.lpNorm<Eigen::Infinity>(),
+          sh::static_residual(rest, q).lpNorm<Eigen::Infinity>() / (kEps * scale)};
+}
+
+void add_round_trip_metrics(LevelOutput& out, const RoundTrip& round_trip) {
+  out.metrics["round_trip_error"] = cases::value_sample(round_trip.error, 1.0);
+  out.metrics["round_trip_error_relative"] = cases::diagnostic(round_trip.relative_error);
+  out.metrics["equilibrium_residual"] = cases::value_sample(round_trip.equilibrium_residual, 1.0);
+}
+
+void add_round_trip_metrics(LevelOutput& out, const solvers::superhelix::RodModel& rest, const VecX& q) {
+  add_round_trip_metrics(out, forward_round_trip(rest, q));
 }
 
 void add_round_trip_specs(std::vector<MetricSpec>& metrics, std::vector<GateSpec>& gates) {

@@ -18,6 +18,13 @@
 
 namespace rodvv::harness::inverse_cases {
 
+struct RoundTrip {
+  double error = 0.0;                 // round_trip_error
+  double relative_error = 0.0;        // round_trip_error_relative
+  double equilibrium_residual = 0.0;  // equilibrium_residual
+};
+RoundTrip forward_round_trip(const solvers::superhelix::RodModel& rest, const VecX& q);
+void add_round_trip_metrics(LevelOutput& out, const RoundTrip& round_trip);
 void add_round_trip_metrics(LevelOutput& out, const solvers::superhelix::RodModel& rest, const VecX& q);
 
 // The specs of those three metrics and their two gates (64 and 16: a multiple of eps, for the O(N)

@@ -11,5 +11,6 @@ void add_stability_threshold(Registry& registry);  // Greenhill's heavy column, 
 void add_round_trip_sphere(Registry& registry);    // frictional contact: the SOCQP of the 2013 paper
 void add_curve_fit(Registry& registry);            // from a polyline to a rest shape
 void add_capstan(Registry& registry);              // forward frictional statics: the capstan with bending
+void add_bundle(Registry& registry);               // many strands in frictional contact: the factored SOCQP
 
 }  // namespace rodvv::harness::inverse_cases

@@ -9,6 +9,7 @@ void register_inverse_cases(Registry& registry) {
   inverse_cases::add_round_trip_sphere(registry);
   inverse_cases::add_curve_fit(registry);
   inverse_cases::add_capstan(registry);
+  inverse_cases::add_bundle(registry);
 }
 
 }  // namespace rodvv::harness

@@ -25,7 +25,7 @@
 //   solved in phi instead of in a Lagrange multiplier) and is exact to round-off.
 // mu = 0: frictionless, r = (max(0, -b~_N / W_NN), 0, 0).
 // Residual: the natural map max_k |r_k - P_K(r_k - rho_k u^_k)| / scale with u^ = u + mu |u_T| e_N
-// (Coulomb) or u (SOC), rho_k = 1 / |W_kk|_2, scale = max_k |b_k| / |W_kk|_2 (units of r); sweeps
+// (Coulomb) or u (SOC), rho_k = 1 / |W_kk|_F, scale = max_k |b_k| / |W_kk|_F (units of r); sweeps
 // stop below `tolerance`. Also reported: the largest cone violation max_k (|r_T| - mu r_N)_+ / scale.
 // Failures: no convergence within max_sweeps -> SolverError (sweeps, residual). Bad input (sizes, a
 // non-finite entry, W not symmetric to 100 eps max|W|, a diagonal block that is not positive
@@ -57,6 +57,9 @@ Vec3 project_onto_friction_cone(const Vec3& x, double mu);
 // Gauss-Seidel's previous force of the contact) first brackets the sliding angle within 0.05 rad of
 // its own, and the 256-interval scan runs only when that gives no admissible root.
 Vec3 solve_local_cone_problem(const Mat3& W, const Vec3& b, double mu, ConeLaw law, const Vec3* guess = nullptr);
+
+// One contact's term of the residual: |r - P_K(r - u^ / |W_kk|_F)| (u^ as above).
+double contact_natural_map(const Mat3& W_kk, const Vec3& r, const Vec3& u, double mu, ConeLaw law);
 
 // The scaled natural-map residual and cone violation of a candidate r (u = W r + b recomputed).
 double cone_residual(const MatX& W, const VecX& b, const VecX& mu, const VecX& r, ConeLaw law);

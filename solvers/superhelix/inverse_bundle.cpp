@@ -1,0 +1,140 @@
+#include "rodvv/solvers/superhelix/inverse_bundle.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "rodvv/common/errors.hpp"
+#include "rodvv/common/validation.hpp"
+#include "rodvv/solvers/contact/factored_delassus.hpp"
+#include "rodvv/solvers/superhelix/inverse_contact.hpp"
+#include "rodvv/solvers/superhelix/kinematics.hpp"
+#include "rodvv/solvers/superhelix/loads.hpp"
+
+namespace rodvv::solvers::superhelix {
+
+namespace {
+
+void check_contacts(const std::vector<RodModel>& strands, const std::vector<BundleContact>& contacts) {
+  const auto check_point = [&](std::size_t k, std::size_t strand, std::size_t point) {
+    const std::string which = "invalid parameter 'contacts': contact " + std::to_string(k);
+    if (strand >= strands.size())
+      throw InputError("contacts", which + " names strand " + std::to_string(strand) + ", must be below " +
+                                       std::to_string(strands.size()));
+    const std::size_t points = strands[strand].elements * strands[strand].gauss_points;
+    if (point >= points)
+      throw InputError("contacts", which + " names Gauss point " + std::to_string(point) + " of strand " +
+                                       std::to_string(strand) + ", must be below " + std::to_string(points));
+  };
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const BundleContact& c = contacts[k];
+    check_point(k, c.strand, c.point);
+    if (c.other_strand != kObstacle) {
+      check_point(k, c.other_strand, c.other_point);
+      if (c.other_strand == c.strand && c.other_point == c.point)
+        throw InputError("contacts", "invalid parameter 'contacts': contact " + std::to_string(k) +
+                                         " joins Gauss point " + std::to_string(c.point) + " of strand " +
+                                         std::to_string(c.strand) + " to itself");
+    }
+    if (!c.normal.allFinite() || !(std::abs(c.normal.norm() - 1.0) <= 1e-10))
+      throw InputError("contacts", "invalid parameter 'contacts': the normal of contact " + std::to_string(k) +
+                                       " must be a finite unit vector (|n| - 1 within 1e-10)");
+    if (!(std::isfinite(c.mu) && c.mu > 0.0))
+      throw InputError("mu", "invalid parameter 'mu' of contact " + std::to_string(k) + " = " + format_value(c.mu) +
+                                 ": must be finite and > 0");
+  }
+}
+
+MatX point_jacobian(const Kinematics& kinematics, std::size_t point) {
+  const GaussPoint& g = kinematics.points()[point];
+  return kinematics.position_jacobian(g.element, g.sigma);
+}
+
+}  // namespace
+
+InverseBundleResult inverse_statics_of_bundle(const std::vector<RodModel>& strands, const std::vector<VecX>& q,
+                                              const std::vector<BundleContact>& contacts,
+                                              const InverseBundleOptions& options) {
+  if (q.size() != strands.size())
+    throw InputError("q", "invalid parameter 'q': must hold one target per strand (" + std::to_string(strands.size()) +
+                              "), got " + std::to_string(q.size()));
+  for (const RodModel& model : strands) validate(model);
+  check_contacts(strands, contacts);
+  require_positive("gamma", options.gamma);
+
+  // Per strand: its kinematics at the target (checks q), K^-1 and the weight K^-2 of the factored W.
+  std::vector<Kinematics> kinematics;
+  std::vector<VecX> compliance, force;
+  contact::FactoredDelassus W;
+  for (std::size_t s = 0; s < strands.size(); ++s) {
+    kinematics.emplace_back(strands[s], q[s]);
+    compliance.push_back(generalised_stiffness(strands[s]).cwiseInverse());
+    force.push_back(external_generalised_force(strands[s], kinematics[s]));
+    W.body_weights.push_back(compliance[s].cwiseAbs2());
+  }
+  const auto m = Eigen::Index(contacts.size());
+  InverseBundleResult result;
+  VecX mu(m), b = VecX::Zero(3 * m);
+  double trace = 0.0;
+  for (Eigen::Index k = 0; k < m; ++k) {
+    const BundleContact& c = contacts[std::size_t(k)];
+    const Mat3 frame = contact_frame(c.normal);
+    result.frames.push_back(frame);
+    mu[k] = c.mu;
+    std::vector<contact::ContactSide> sides{{c.strand, frame.transpose() * point_jacobian(kinematics[c.strand], c.point)}};
+    if (c.other_strand == c.strand)
+      sides[0].rows -= frame.transpose() * point_jacobian(kinematics[c.strand], c.other_point);
+    else if (c.other_strand != kObstacle)
+      sides.push_back({c.other_strand, -frame.transpose() * point_jacobian(kinematics[c.other_strand], c.other_point)});
+    // b = sum_s H_s K_s^-2 F_s (the header's z_s = -K_s^-1 F_s with q0bar = q).
+    for (const contact::ContactSide& side : sides)
+      b.segment<3>(3 * k) += side.rows * W.body_weights[side.body].cwiseProduct(force[side.body]);
+    W.sides.push_back(std::move(sides));
+    trace += contact::diagonal_block(W, std::size_t(k)).trace();
+  }
+  const double gamma = options.gamma * (m > 0 ? trace / double(3 * m) : 1.0);
+  W.compliance = VecX::Constant(m, 2.0 * gamma);
+  const contact::ConeSolution socqp =
+      contact::solve_cone_complementarity(W, b, mu, contact::ConeLaw::SecondOrderCone, options.solver);
+  result.local_forces = socqp.r;
+  result.sweeps = socqp.sweeps;
+  result.residual = socqp.residual;
+  result.cone_violation = socqp.cone_violation;
+
+  // q0_s = q_s - K_s^-1 (F_s + H_s^T r).
+  std::vector<VecX> load = force;
+  for (Eigen::Index k = 0; k < m; ++k)
+    for (const contact::ContactSide& side : W.sides[std::size_t(k)])
+      load[side.body].noalias() += side.rows.transpose() * socqp.r.segment<3>(3 * k);
+  for (std::size_t s = 0; s < strands.size(); ++s)
+    result.natural_strain.push_back(q[s] - compliance[s].cwiseProduct(load[s]));
+  return result;
+}
+
+std::vector<RodModel> bundle_rest_models(const std::vector<RodModel>& strands,
+                                         const std::vector<BundleContact>& contacts,
+                                         const InverseBundleResult& result) {
+  if (result.natural_strain.size() != strands.size() || result.frames.size() != contacts.size() ||
+      result.local_forces.size() != Eigen::Index(3 * contacts.size()))
+    throw InputError("result", "invalid parameter 'result': must be the inverse statics of these strands and contacts");
+  check_contacts(strands, contacts);
+  std::vector<RodModel> rest = strands;
+  for (std::size_t s = 0; s < strands.size(); ++s) {
+    RodModel& model = rest[s];
+    if (result.natural_strain[s].size() != Eigen::Index(dof_count(model)))
+      throw InputError("result", "invalid parameter 'result': the rest shape of strand " + std::to_string(s) +
+                                     " must hold " + std::to_string(dof_count(model)) + " values");
+    model.natural_strain_per_element.resize(model.elements);
+    for (std::size_t e = 0; e < model.elements; ++e)
+      model.natural_strain_per_element[e] = result.natural_strain[s].segment<3>(Eigen::Index(3 * e));
+    model.point_forces.assign(model.elements * model.gauss_points, Vec3::Zero());
+  }
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const BundleContact& c = contacts[k];
+    const Vec3 force = result.frames[k] * result.local_forces.segment<3>(Eigen::Index(3 * k));
+    rest[c.strand].point_forces[c.point] += force;
+    if (c.other_strand != kObstacle) rest[c.other_strand].point_forces[c.other_point] -= force;
+  }
+  return rest;
+}
+
+}  // namespace rodvv::solvers::superhelix
