@@ -25,6 +25,11 @@
 //    one contact each, mu = 0.6) lying on a sphere along great circles, strand by strand (no
 //    strand-strand contact: each SOCQP is its own), S = 10 .. 1000 (10 000 contacts at S = 1000; the
 //    issue's target: under 5 s).
+//  - BM_InverseBundle: the inverse statics of a bundle with strand-strand contacts (inverse_bundle.hpp,
+//    one SOCQP over all strands on the factored Delassus operator): P pairs of strands (8 elements,
+//    radius 5e-5 L) along meridians of a head, each outer strand lying on its inner one, every Gauss point
+//    in contact (16 P contacts: 624, 2 496, 10 000 at P = 39, 156, 625), at gamma = 1e-3 (the cases'
+//    default) and 1e-2 (the target: 10 000 contacts under 5 s).
 //  - BM_FrictionalDrawOnSlope: the forward frictional statics (frictional_statics.hpp) of a heavy rod lying
 //    on a plane tilted 20 degrees, one contact per element (mu = 0.35), drawn up the slope by one increment
 //    from its frictionless rest (the rest solved outside the timed loop), N = 8 .. 256: Newton on (q, r),
@@ -47,6 +52,7 @@
 #include "rodvv/solvers/superhelix/contact_dynamics.hpp"
 #include "rodvv/solvers/superhelix/dynamics.hpp"
 #include "rodvv/solvers/superhelix/frictional_statics.hpp"
+#include "rodvv/solvers/superhelix/inverse_bundle.hpp"
 #include "rodvv/solvers/superhelix/inverse_contact.hpp"
 #include "rodvv/solvers/superhelix/inverse_statics.hpp"
 #include "rodvv/solvers/superhelix/kinematics.hpp"
@@ -291,6 +297,64 @@ void BM_InverseHairOnSphere(benchmark::State& bench) {
   bench.counters["mean_sweeps"] = static_cast<double>(sweeps) / static_cast<double>(strands);
 }
 
+// Pairs of strands along meridians of a head (inverse/bundle's layout): the inner strand on the head,
+// the outer one on the inner, 8 elements each, one contact per element and per layer.
+struct StrandBundle {
+  std::vector<sh::RodModel> strands;
+  std::vector<rodvv::VecX> q;
+  std::vector<sh::BundleContact> contacts;
+};
+
+StrandBundle strand_bundle(std::size_t pairs) {
+  const double R = 0.2, a = 1.25e-5, L = 0.25, pi = 3.141592653589793;
+  StrandBundle b;
+  for (std::size_t p = 0; p < pairs; ++p) {
+    const double azimuth = 2.0 * pi * (double(p) + 0.3) / double(pairs);
+    const double theta = pi / 12.0 + (pi / 12.0) * double((7 * p) % pairs) / double(pairs);
+    const Vec3 across(std::cos(azimuth), std::sin(azimuth), 0.0);
+    const Vec3 outward = std::sin(theta) * across + std::cos(theta) * Vec3::UnitZ();
+    const Vec3 tangent = std::cos(theta) * across - std::sin(theta) * Vec3::UnitZ();
+    const std::size_t first = b.strands.size();
+    for (const double rho : {R + a, R + 3.0 * a}) {
+      sh::RodModel m;
+      m.length = L * rho / (R + a);
+      m.elements = 8;
+      m.gauss_points = 1;
+      m.stiffness = Vec3(0.6e-3, 1.4e-3, 1e-3);
+      m.line_density = 0.05;
+      m.gravity = Vec3(0.0, 0.0, -9.81);
+      m.root_position = rho * outward;
+      m.root_frame << tangent, -outward, tangent.cross(-outward);
+      rodvv::VecX q = rodvv::VecX::Zero(24);
+      for (int e = 0; e < 8; ++e) q[3 * e + 2] = 1.0 / rho;
+      b.strands.push_back(m);
+      b.q.push_back(q);
+    }
+    const sh::Kinematics on_head(b.strands[first], b.q[first]);
+    for (std::size_t g = 0; g < 8; ++g) {
+      const Vec3 normal = on_head.points()[g].position.normalized();
+      b.contacts.push_back({first, g, sh::kObstacle, 0, normal, 0.6});
+      b.contacts.push_back({first + 1, g, first, g, normal, 0.6});
+    }
+  }
+  return b;
+}
+
+void BM_InverseBundle(benchmark::State& bench) {
+  const StrandBundle b = strand_bundle(static_cast<std::size_t>(bench.range(0)));
+  sh::InverseBundleOptions options;
+  options.gamma = std::pow(10.0, -double(bench.range(1)));
+  options.solver.tolerance = 1e-8;
+  std::size_t sweeps = 0;
+  for (auto _ : bench) {
+    const auto result = sh::inverse_statics_of_bundle(b.strands, b.q, b.contacts, options);
+    benchmark::DoNotOptimize(result.local_forces.data());
+    sweeps = result.sweeps;
+  }
+  bench.counters["contacts"] = static_cast<double>(b.contacts.size());
+  bench.counters["sweeps"] = static_cast<double>(sweeps);
+}
+
 // A heavy rod (N elements) lying down the fall line of a plane tilted by 20 degrees, clamped at its upper end,
 // and its frictionless rest there.
 struct RodOnSlope {
@@ -376,6 +440,7 @@ BENCHMARK(BM_SelfContactsAllPairs)->RangeMultiplier(2)->Range(64, 1024)->ArgName
 BENCHMARK(BM_InverseStatics)->RangeMultiplier(4)->Range(16, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_StepOnPlane)->ArgsProduct({{8, 16, 32, 64}, {1, 4}})->ArgNames({"N", "gauss"})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FrictionalDrawOnSlope)->RangeMultiplier(2)->Range(8, 256)->ArgName("N")->Unit(benchmark::kMillisecond)->Complexity();
+BENCHMARK(BM_InverseBundle)->ArgsProduct({{39, 156, 625}, {3, 2}})->ArgNames({"P", "gamma_exp"})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_InverseHairOnSphere)->RangeMultiplier(10)->Range(10, 1000)->ArgName("strands")->Unit(benchmark::kMillisecond)->Complexity(benchmark::oN);
 
 }  // namespace

@@ -32,10 +32,10 @@ void validate(const FactoredDelassus& W, const VecX& b, const VecX& mu) {
         throw InputError("sides", "invalid parameter 'sides': " + contact_name(k) + " names body " +
                                       std::to_string(side.body) + ", must be below " +
                                       std::to_string(W.body_weights.size()));
-      if (side.rows.cols() != W.body_weights[side.body].size() || !side.rows.allFinite())
-        throw InputError("sides", "invalid parameter 'sides': " + contact_name(k) + " must have 3 x " +
-                                      std::to_string(W.body_weights[side.body].size()) +
-                                      " finite rows on body " + std::to_string(side.body));
+      if (side.rows.cols() < 1 || side.rows.cols() > W.body_weights[side.body].size() || !side.rows.allFinite())
+        throw InputError("sides", "invalid parameter 'sides': " + contact_name(k) + " must have 3 x m finite rows, 1 <= m <= " +
+                                      std::to_string(W.body_weights[side.body].size()) + " on body " +
+                                      std::to_string(side.body));
     }
   }
   if (W.compliance.size() != 0 &&
@@ -69,12 +69,13 @@ class FactoredOperator {
   Mat3 block(Eigen::Index k) const { return blocks_[std::size_t(k)]; }
   Vec3 product(Eigen::Index k, const VecX& r) const {
     Vec3 result = compliance(k) * r.segment<3>(3 * k);
-    for (const ContactSide& side : W_.sides[std::size_t(k)]) result.noalias() += side.rows * y_[side.body];
+    for (const ContactSide& side : W_.sides[std::size_t(k)]) result.noalias() += side.rows * y_[side.body].head(side.rows.cols());
     return result;
   }
   void changed(Eigen::Index k, const Vec3& delta) {
     for (const ContactSide& side : W_.sides[std::size_t(k)])
-      y_[side.body].noalias() += W_.body_weights[side.body].cwiseProduct(side.rows.transpose() * delta);
+      y_[side.body].head(side.rows.cols()).noalias() +=
+          W_.body_weights[side.body].head(side.rows.cols()).cwiseProduct(side.rows.transpose() * delta);
   }
   VecX velocities(const VecX& r) const {  // W r from y (kept equal to M H^T r by changed())
     VecX u(r.size());
@@ -94,7 +95,7 @@ class FactoredOperator {
 Mat3 diagonal_block(const FactoredDelassus& W, std::size_t contact) {
   Mat3 block = Mat3::Zero();
   for (const ContactSide& side : W.sides[contact])
-    block.noalias() += side.rows * W.body_weights[side.body].asDiagonal() * side.rows.transpose();
+    block.noalias() += side.rows * W.body_weights[side.body].head(side.rows.cols()).asDiagonal() * side.rows.transpose();
   if (W.compliance.size() != 0) block.diagonal().array() += W.compliance[Eigen::Index(contact)];
   return 0.5 * (block + block.transpose());
 }
@@ -106,12 +107,13 @@ VecX apply(const FactoredDelassus& W, const VecX& r) {
   std::vector<VecX> y;
   for (const VecX& m : W.body_weights) y.push_back(VecX::Zero(m.size()));
   for (std::size_t k = 0; k < W.sides.size(); ++k)
-    for (const ContactSide& side : W.sides[k]) y[side.body].noalias() += side.rows.transpose() * r.segment<3>(Eigen::Index(3 * k));
+    for (const ContactSide& side : W.sides[k])
+      y[side.body].head(side.rows.cols()).noalias() += side.rows.transpose() * r.segment<3>(Eigen::Index(3 * k));
   for (std::size_t body = 0; body < y.size(); ++body) y[body] = W.body_weights[body].cwiseProduct(y[body]);
   VecX product = VecX::Zero(r.size());
   for (std::size_t k = 0; k < W.sides.size(); ++k) {
     auto segment = product.segment<3>(Eigen::Index(3 * k));
-    for (const ContactSide& side : W.sides[k]) segment.noalias() += side.rows * y[side.body];
+    for (const ContactSide& side : W.sides[k]) segment.noalias() += side.rows * y[side.body].head(side.rows.cols());
     if (W.compliance.size() != 0) segment += W.compliance[Eigen::Index(k)] * r.segment<3>(Eigen::Index(3 * k));
   }
   return product;

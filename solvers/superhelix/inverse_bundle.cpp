@@ -1,5 +1,6 @@
 #include "rodvv/solvers/superhelix/inverse_bundle.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -44,9 +45,12 @@ void check_contacts(const std::vector<RodModel>& strands, const std::vector<Bund
   }
 }
 
-MatX point_jacobian(const Kinematics& kinematics, std::size_t point) {
+// frame^T dx_g/dq over the strand's first 3 (e + 1) coordinates, e the point's element: a point moves
+// with the elements up to its own only (factored_delassus.hpp keeps the leading columns).
+using ContactRows = Eigen::Matrix<double, 3, Eigen::Dynamic>;
+ContactRows contact_rows(const Mat3& frame, const Kinematics& kinematics, std::size_t point) {
   const GaussPoint& g = kinematics.points()[point];
-  return kinematics.position_jacobian(g.element, g.sigma);
+  return frame.transpose() * kinematics.position_jacobian(g.element, g.sigma).leftCols(Eigen::Index(3 * (g.element + 1)));
 }
 
 }  // namespace
@@ -80,14 +84,19 @@ InverseBundleResult inverse_statics_of_bundle(const std::vector<RodModel>& stran
     const Mat3 frame = contact_frame(c.normal);
     result.frames.push_back(frame);
     mu[k] = c.mu;
-    std::vector<contact::ContactSide> sides{{c.strand, frame.transpose() * point_jacobian(kinematics[c.strand], c.point)}};
-    if (c.other_strand == c.strand)
-      sides[0].rows -= frame.transpose() * point_jacobian(kinematics[c.strand], c.other_point);
-    else if (c.other_strand != kObstacle)
-      sides.push_back({c.other_strand, -frame.transpose() * point_jacobian(kinematics[c.other_strand], c.other_point)});
+    std::vector<contact::ContactSide> sides{{c.strand, contact_rows(frame, kinematics[c.strand], c.point)}};
+    if (c.other_strand == c.strand) {  // a self-contact: one side, frame^T (J_a - J_b)
+      const ContactRows other = contact_rows(frame, kinematics[c.strand], c.other_point);
+      ContactRows merged = ContactRows::Zero(3, std::max(sides[0].rows.cols(), other.cols()));
+      merged.leftCols(sides[0].rows.cols()) = sides[0].rows;
+      merged.leftCols(other.cols()) -= other;
+      sides[0].rows = std::move(merged);
+    } else if (c.other_strand != kObstacle) {
+      sides.push_back({c.other_strand, -contact_rows(frame, kinematics[c.other_strand], c.other_point)});
+    }
     // b = sum_s H_s K_s^-2 F_s (the header's z_s = -K_s^-1 F_s with q0bar = q).
     for (const contact::ContactSide& side : sides)
-      b.segment<3>(3 * k) += side.rows * W.body_weights[side.body].cwiseProduct(force[side.body]);
+      b.segment<3>(3 * k) += side.rows * W.body_weights[side.body].cwiseProduct(force[side.body]).head(side.rows.cols());
     W.sides.push_back(std::move(sides));
     trace += contact::diagonal_block(W, std::size_t(k)).trace();
   }
@@ -104,7 +113,7 @@ InverseBundleResult inverse_statics_of_bundle(const std::vector<RodModel>& stran
   std::vector<VecX> load = force;
   for (Eigen::Index k = 0; k < m; ++k)
     for (const contact::ContactSide& side : W.sides[std::size_t(k)])
-      load[side.body].noalias() += side.rows.transpose() * socqp.r.segment<3>(3 * k);
+      load[side.body].head(side.rows.cols()).noalias() += side.rows.transpose() * socqp.r.segment<3>(3 * k);
   for (std::size_t s = 0; s < strands.size(); ++s)
     result.natural_strain.push_back(q[s] - compliance[s].cwiseProduct(load[s]));
   return result;

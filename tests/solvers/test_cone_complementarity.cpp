@@ -15,6 +15,7 @@
 
 #include "rodvv/common/errors.hpp"
 #include "rodvv/solvers/contact/cone_complementarity.hpp"
+#include "rodvv/solvers/contact/factored_delassus.hpp"
 #include "rodvv/testing/tolerance.hpp"
 
 namespace {
@@ -209,6 +210,139 @@ TEST(ConeComplementarity, ABodyOnAnInclineSticksIffTanAlphaIsAtMostMu) {
     }
     EXPECT_LE(solution.residual, 1e-12);
   }
+}
+
+// A planar contact (b_T2 = 4e-14, W's T2 row decoupled: a block of inverse/bundle's meridian strands)
+// slides exactly along t1: the sliding angle's equation is odd about phi = 0 and its root lies within
+// 1e-16 of it. The phi scan once evaluated its last end at 2 pi, where sin(2 pi) = -2.4e-16, so neither
+// end interval saw the sign change ("no sliding solution"). r_N from mpmath (40 digits) at phi = 0,
+// r = r_N (1, mu, 0): the minimiser of 1/2 r^T W r + b^T r on that ray.
+TEST(ConeComplementarity, APlanarSlidingRootNextToPhiZeroIsFound) {
+  Mat3 W;
+  W << 145749.79464043232, 56973.325078089139, -2.1143929131807251e-12,  //
+      56973.325078089139, 24890.05331230268, 3.4735736008646333e-12,     //
+      -2.1143929131807251e-12, 3.4735736008646333e-12, 141867.3525641512;
+  const double mu = 0.6, r_N = 0.002911436319381132068;
+  for (const double b_T2 : {4.0043144055931211e-14, 0.0, -4.0043144055931211e-14}) {
+    const Vec3 b(-522.85853816888221, -211.03241134206544, b_T2);
+    const Vec3 r = contact::solve_local_cone_problem(W, b, mu, ConeLaw::SecondOrderCone);
+    // the stick solution's rounding, through W's condition number 74 (eigenvalues 2.3e3 .. 1.7e5)
+    EXPECT_LE((r - Vec3(r_N, mu * r_N, 0.0)).norm(), 1e3 * kEpsilon * r_N) << "b_T2 = " << b_T2;
+    const double scale = r.norm() * W.norm() + b.norm();
+    EXPECT_LE(law_violation(r, W * r + b, mu, ConeLaw::SecondOrderCone, scale), 1e3 * kEpsilon) << b_T2;
+  }
+}
+
+// W = sum_b H_b M_b H_b^T + C assembled densely here from random factors: three bodies, contacts on one
+// body or two.
+struct Factored {
+  contact::FactoredDelassus factors;
+  MatX dense;
+};
+
+Factored random_factored(std::mt19937& rng) {
+  std::uniform_real_distribution<double> entry(-1.0, 1.0), weight(0.2, 2.0);
+  const std::vector<int> sizes{5, 7, 4};
+  const std::vector<std::vector<std::size_t>> touching{{0}, {0, 1}, {2, 1}, {1}, {2, 0}, {2}};
+  Factored f;
+  std::vector<Eigen::Index> offset{0};
+  for (const int n : sizes) {
+    VecX m(n);
+    for (int i = 0; i < n; ++i) m[i] = weight(rng);
+    f.factors.body_weights.push_back(m);
+    offset.push_back(offset.back() + n);
+  }
+  MatX H = MatX::Zero(3 * Eigen::Index(touching.size()), offset.back());
+  VecX M(offset.back());
+  for (std::size_t b = 0; b < sizes.size(); ++b) M.segment(offset[b], sizes[b]) = f.factors.body_weights[b];
+  for (std::size_t k = 0; k < touching.size(); ++k) {
+    std::vector<contact::ContactSide> sides;
+    for (const std::size_t body : touching[k]) {
+      // the leading columns only on some sides (the rest of the block is zero)
+      Eigen::Matrix<double, 3, Eigen::Dynamic> rows(3, sizes[body] - int(k % 3));
+      for (Eigen::Index i = 0; i < rows.size(); ++i) rows(i % 3, i / 3) = entry(rng);
+      H.block(3 * Eigen::Index(k), offset[body], 3, rows.cols()) = rows;
+      sides.push_back({body, rows});
+    }
+    f.factors.sides.push_back(sides);
+  }
+  f.factors.compliance = VecX::Constant(Eigen::Index(touching.size()), 0.05);
+  f.dense = H * M.asDiagonal() * H.transpose();
+  f.dense.diagonal().array() += 0.05;
+  return f;
+}
+
+TEST(ConeComplementarity, TheFactoredOperatorIsTheDenseOne) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> entry(-1.0, 1.0), friction(0.1, 1.0);
+  for (int trial = 0; trial < 8; ++trial) {
+    const Factored f = random_factored(rng);
+    const Eigen::Index n = f.dense.rows() / 3;
+    VecX b(3 * n), mu(n), r(3 * n);
+    for (Eigen::Index i = 0; i < 3 * n; ++i) b[i] = entry(rng), r[i] = entry(rng);
+    for (Eigen::Index k = 0; k < n; ++k) mu[k] = friction(rng);
+    const double size = f.dense.norm();
+    EXPECT_LE((contact::apply(f.factors, r) - f.dense * r).norm(), 64 * kEpsilon * size * r.norm());
+    for (Eigen::Index k = 0; k < n; ++k)
+      EXPECT_LE((contact::diagonal_block(f.factors, std::size_t(k)) - f.dense.block<3, 3>(3 * k, 3 * k)).norm(),
+                64 * kEpsilon * size);
+    const MatX W = 0.5 * (f.dense + f.dense.transpose());
+    for (ConeLaw law : {ConeLaw::Coulomb, ConeLaw::SecondOrderCone}) {
+      contact::ConeSolution dense, factored;
+      try {
+        dense = contact::solve_cone_complementarity(W, b, mu, law);
+      } catch (const rodvv::SolverError&) {
+        EXPECT_EQ(law, ConeLaw::Coulomb);  // not a convex program: Gauss-Seidel may not converge
+        continue;
+      }
+      factored = contact::solve_cone_complementarity(f.factors, b, mu, law);
+      EXPECT_LE(factored.residual, 1e-12);
+      // the same sweeps on the same operator, up to the rounding of its products
+      EXPECT_LE((factored.r - dense.r).norm(), 1e-9 * (1.0 + dense.r.norm())) << "trial " << trial;
+      EXPECT_LE((factored.u - (W * factored.r + b)).norm(), 1e-12 * (size * factored.r.norm() + b.norm()));
+      if (law == ConeLaw::SecondOrderCone) {
+        EXPECT_LE((factored.r - minimise_over_cones(W, b, mu)).norm(), 1e-8 * (1.0 + factored.r.norm())) << trial;
+      }
+    }
+  }
+}
+
+TEST(ConeComplementarity, TheFactoredOperatorRefusesMalformedFactors) {
+  std::mt19937 rng(3);
+  const Factored f = random_factored(rng);
+  const Eigen::Index n = f.dense.rows() / 3;
+  const VecX b = VecX::Constant(3 * n, -1.0), mu = VecX::Constant(n, 0.3);
+  const auto with = [&](auto change) {
+    contact::FactoredDelassus W = f.factors;
+    VecX bb = b, m = mu;
+    change(W, bb, m);
+    try {
+      contact::solve_cone_complementarity(W, bb, m, ConeLaw::SecondOrderCone);
+    } catch (const rodvv::InputError& e) {
+      return e.parameter();
+    }
+    return std::string("none");
+  };
+  using F = contact::FactoredDelassus;
+  EXPECT_EQ(with([](F&, VecX&, VecX&) {}), "none");
+  EXPECT_EQ(with([](F& W, VecX&, VecX&) { W.body_weights[1][2] = 0.0; }), "body_weights");
+  EXPECT_EQ(with([](F& W, VecX&, VecX&) { W.sides[3].clear(); }), "sides");
+  EXPECT_EQ(with([](F& W, VecX&, VecX&) { W.sides[1][1].body = 0; }), "sides");          // two sides, one body
+  EXPECT_EQ(with([](F& W, VecX&, VecX&) { W.sides[0][0].body = 3; }), "sides");          // no such body
+  EXPECT_EQ(with([](F& W, VecX&, VecX&) { W.sides[0][0].rows.setOnes(3, 6); }), "sides");  // body 0 has 5 dofs
+  EXPECT_EQ(with([](F& W, VecX&, VecX&) { W.sides[0][0].rows.resize(3, 0); }), "sides");
+  EXPECT_EQ(with([](F& W, VecX&, VecX&) { W.sides[2][0].rows(1, 1) = std::nan(""); }), "sides");
+  EXPECT_EQ(with([](F& W, VecX&, VecX&) { W.compliance[4] = -1e-3; }), "compliance");
+  EXPECT_EQ(with([](F& W, VecX&, VecX&) { W.compliance = VecX::Zero(2); }), "compliance");
+  EXPECT_EQ(with([](F&, VecX& bb, VecX&) { bb = VecX::Zero(5); }), "b");
+  EXPECT_EQ(with([](F&, VecX&, VecX& m) { m[0] = -0.2; }), "mu");
+  // A contact whose rows are zero and no compliance: a singular diagonal block.
+  EXPECT_EQ(with([](F& W, VecX&, VecX&) {
+              W.sides[0][0].rows.setZero();
+              W.compliance.resize(0);
+            }),
+            "W");
+  EXPECT_THROW(contact::apply(f.factors, VecX::Zero(4)), rodvv::InputError);
 }
 
 TEST(ConeComplementarity, RefusesMalformedProblems) {

@@ -13,7 +13,7 @@
 // Boissieux 2011). The same problem, laws, residual, settings and results as the dense form.
 // Bad input (InputError naming it): a weight that is not finite and > 0 ("body_weights"); a contact
 // without sides, with more than two, with two on one body, a side naming no body or with rows that
-// are not 3 x n_b and finite ("sides"); c_k < 0 or not finite, or not one per contact ("compliance");
+// are not 3 x m (1 <= m <= n_b) and finite ("sides"); c_k < 0 or not finite, or not one per contact ("compliance");
 // b, mu as the dense form; a diagonal block W_kk that is not positive definite ("W").
 #include <cstddef>
 #include <vector>
@@ -25,7 +25,10 @@ namespace rodvv::solvers::contact {
 
 struct ContactSide {
   std::size_t body = 0;
-  Eigen::Matrix<double, 3, Eigen::Dynamic> rows;  // 3 x n_body: the contact's (normal, t1, t2) velocities per unit body velocity
+  // 3 x m, 1 <= m <= n_body: the contact's (normal, t1, t2) velocities per unit velocity of the body's
+  // first m degrees of freedom; the rest of H_kb is zero (a rod's point moves with the elements up to
+  // its own only: half the memory and work of a full block on average)
+  Eigen::Matrix<double, 3, Eigen::Dynamic> rows;
 };
 
 struct FactoredDelassus {
