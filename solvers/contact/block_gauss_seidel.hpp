@@ -8,6 +8,7 @@
 //   changed(k, delta)     r_k moved by delta (the factored form keeps H^T r per body up to date),
 //   velocities(r)         W r, all contacts (the residual).
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <string>
 
@@ -46,12 +47,15 @@ ConeSolution block_gauss_seidel(Operator& W, const VecX& b, const VecX& mu, Cone
     solution.u = b;
     return solution;
   }
+  // The residual costs another pass over W (as much as a sweep: the dense product, or for a bundle the
+  // memory traffic of the factors), so it is evaluated on a schedule: after the first sweep, then at
+  // half the sweeps its observed linear rate between the last two evaluations predicts to the
+  // tolerance, at most a quarter of the sweeps so far ahead (a rate seen on a plateau may be too slow
+  // by any factor; the cap bounds the sweeps done beyond convergence to a quarter). Near the tolerance
+  // it is evaluated every sweep, and at the last one; the stopping test is the full residual's.
+  std::size_t next_check = 1, last_check = 0;
+  double last_residual = 0.0;
   for (std::size_t sweep = 1; sweep <= settings.max_sweeps; ++sweep) {
-    // The residual as the sweep leaves each contact (its u from its own local solve: exact then, moved
-    // since by the contacts after it). The full residual costs another pass over W (for a bundle, as
-    // much memory traffic as the sweep), so it is evaluated only when this one says converged, and at
-    // the last sweep; the stopping test is the full residual's.
-    double as_left = 0.0;
     for (Eigen::Index k = 0; k < n; ++k) {
       const Mat3 block = W.block(k);
       const Vec3 previous = solution.r.segment<3>(3 * k);
@@ -59,14 +63,14 @@ ConeSolution block_gauss_seidel(Operator& W, const VecX& b, const VecX& mu, Cone
       const Vec3 next = solve_local_cone_problem(block, local_b, mu[k], law, &previous);
       solution.r.segment<3>(3 * k) = next;
       W.changed(k, next - previous);
-      as_left = std::max(as_left, contact_natural_map(block, next, local_b + block * next, mu[k], law));
     }
     solution.sweeps = sweep;
-    solution.residual = as_left / scale;
-    if (solution.residual <= settings.tolerance || sweep == settings.max_sweeps) {
-      solution.u = W.velocities(solution.r) + b;
-      solution.residual = natural_map_residual(W, b, mu, solution.r, solution.u, law);
+    if (sweep < next_check && sweep < settings.max_sweeps) {
+      check_time_budget(method, sweep, solution.residual);
+      continue;
     }
+    solution.u = W.velocities(solution.r) + b;
+    solution.residual = natural_map_residual(W, b, mu, solution.r, solution.u, law);
     check_time_budget(method, sweep, solution.residual);
     if (solution.residual <= settings.tolerance) break;
     if (sweep == settings.max_sweeps)
@@ -74,6 +78,15 @@ ConeSolution block_gauss_seidel(Operator& W, const VecX& b, const VecX& mu, Cone
                                     format_value(solution.residual) + " > tolerance " +
                                     format_value(settings.tolerance) + ")",
                         sweep, solution.residual);
+    std::size_t ahead = 1;
+    if (last_check > 0 && solution.residual < last_residual) {
+      const double rate = std::log(solution.residual / last_residual) / double(sweep - last_check);  // < 0
+      const double predicted = std::log(settings.tolerance / solution.residual) / rate;
+      ahead = std::clamp<std::size_t>(std::size_t(0.5 * predicted), 1, std::max<std::size_t>(1, sweep / 4));
+    }
+    last_check = sweep;
+    last_residual = solution.residual;
+    next_check = sweep + ahead;
   }
   for (Eigen::Index k = 0; k < n; ++k) {
     const Vec3 rk = solution.r.segment<3>(3 * k);

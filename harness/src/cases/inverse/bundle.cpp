@@ -197,7 +197,7 @@ void add_bundle(Registry& registry) {
        make_parameter("rhoS", 0.05, 0.0, 1e12, true, false, "mass / length", "line density"),
        make_parameter("g", 9.81, 0.0, 1e12, true, false, "length / time^2", "gravity"),
        make_parameter("mu", 0.6, 0.0, 1e3, true, false, "", "friction coefficient"),
-       make_parameter("N", 8, 2, 64, false, false, "", "elements per strand"),
+       integer_parameter("N", 8.0, 2.0, 64.0, "elements per strand"),
        make_parameter("gamma", 1e-3, 1e-3, 1.0, false, false, "", "SOCQP regularisation, relative to the mean diagonal of sum H K^-2 H^T")},
       Resolution{"P", "strand pairs", ResolutionScale::Count, {2, 8, 32}, {2, 8, 32, 128, 313}}, std::move(metrics),
       std::move(gates), run);
