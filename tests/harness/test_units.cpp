@@ -64,6 +64,7 @@ INSTANTIATE_TEST_SUITE_P(
                       // A hair bundle's SOCQP: the cone residual and the pair consistency are dimensionless (the
                       // same sweeps at any units, measured); the round trips are in eps, at round-off.
                       UnitsCase{"inverse/bundle", {"round_trip_error", "equilibrium_residual"}},
+                      UnitsCase{"inverse/friction-cone", {"round_trip_error", "equilibrium_residual"}},
                       // The pendulum's g, l and its inputs in time units (the start rate v0, the horizon t_end):
                       // fixed steps in units of 1/omega, errors in rad and in units of 1/omega.
                       UnitsCase{"pendulum/rotation/rk4", {"steps"}},

@@ -12,5 +12,6 @@ void add_round_trip_sphere(Registry& registry);    // frictional contact: the SO
 void add_curve_fit(Registry& registry);            // from a polyline to a rest shape
 void add_capstan(Registry& registry);              // forward frictional statics: the capstan with bending
 void add_bundle(Registry& registry);               // many strands in frictional contact: the factored SOCQP
+void add_friction_cone(Registry& registry);        // the cone's threshold tan alpha = mu in the inverse SOCQP
 
 }  // namespace rodvv::harness::inverse_cases

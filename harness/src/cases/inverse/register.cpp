@@ -10,6 +10,7 @@ void register_inverse_cases(Registry& registry) {
   inverse_cases::add_curve_fit(registry);
   inverse_cases::add_capstan(registry);
   inverse_cases::add_bundle(registry);
+  inverse_cases::add_friction_cone(registry);
 }
 
 }  // namespace rodvv::harness
