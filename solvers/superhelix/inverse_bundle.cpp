@@ -53,6 +53,29 @@ ContactRows contact_rows(const Mat3& frame, const Kinematics& kinematics, std::s
   return frame.transpose() * kinematics.position_jacobian(g.element, g.sigma).leftCols(Eigen::Index(3 * (g.element + 1)));
 }
 
+// A contact between two rods presses them apart along the line between its points: its normal must be
+// the direction from the other point to this one (to 1e-6, an angle a normal computed from the two
+// points in single precision meets). Obstacle contacts carry the obstacle's normal, which the bundle
+// does not know.
+void check_normals(const std::vector<Kinematics>& kinematics, const std::vector<BundleContact>& contacts) {
+  constexpr double kNormalTolerance = 1e-6;
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const BundleContact& c = contacts[k];
+    if (c.other_strand == kObstacle) continue;
+    const Vec3 apart = kinematics[c.strand].points()[c.point].position -
+                       kinematics[c.other_strand].points()[c.other_point].position;
+    const std::string which = "invalid parameter 'contacts': contact " + std::to_string(k);
+    if (!(apart.norm() > 0.0))
+      throw InputError("contacts", which + " joins two points at the same place: its normal is undefined");
+    if (!((c.normal - apart.normalized()).norm() <= kNormalTolerance))
+      throw InputError("contacts", which + "'s normal is inconsistent with its points: it must point from Gauss point " +
+                                       std::to_string(c.other_point) + " of strand " + std::to_string(c.other_strand) +
+                                       " to Gauss point " + std::to_string(c.point) + " of strand " +
+                                       std::to_string(c.strand) + " (within 1e-6), is " +
+                                       format_value((c.normal - apart.normalized()).norm()) + " off");
+  }
+}
+
 }  // namespace
 
 InverseBundleResult inverse_statics_of_bundle(const std::vector<RodModel>& strands, const std::vector<VecX>& q,
@@ -75,6 +98,7 @@ InverseBundleResult inverse_statics_of_bundle(const std::vector<RodModel>& stran
     force.push_back(external_generalised_force(strands[s], kinematics[s]));
     W.body_weights.push_back(compliance[s].cwiseAbs2());
   }
+  check_normals(kinematics, contacts);
   const auto m = Eigen::Index(contacts.size());
   InverseBundleResult result;
   VecX mu(m), b = VecX::Zero(3 * m);

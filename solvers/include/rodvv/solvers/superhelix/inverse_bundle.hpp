@@ -19,7 +19,8 @@
 // sides are merged: frame^T (J_a - J_b)).
 // Bad input (InputError naming it): as validate(model) per strand and q ("q": one target per strand,
 // 3N finite values each); a contact naming a strand or Gauss point out of range, or the same point
-// twice, or a normal that is not a finite unit vector to 1e-10 ("contacts"); mu <= 0 or not finite
+// twice, or a normal that is not a finite unit vector to 1e-10, or, between two rods, not the direction
+// from the other point to this one within 1e-6, or two points at the same place ("contacts"); mu <= 0 or not finite
 // ("mu"); gamma <= 0 ("gamma"). A SOCQP that does not converge: SolverError (sweeps, residual).
 #include <cstddef>
 #include <limits>
@@ -36,7 +37,7 @@ inline constexpr std::size_t kObstacle = std::numeric_limits<std::size_t>::max()
 struct BundleContact {
   std::size_t strand = 0, point = 0;                    // the rod the force r acts on, its Gauss point
   std::size_t other_strand = kObstacle, other_point = 0;  // the rod that feels -r, or kObstacle
-  Vec3 normal;                                          // unit, world, towards `strand`'s point
+  Vec3 normal;  // unit, world, towards `strand`'s point (between rods: from the other point to it)
   double mu = 0.5;                                      // friction coefficient, > 0
 };
 
