@@ -5,7 +5,7 @@
 //   contacts()            the number of contacts n,
 //   block(k)              W_kk (3 x 3, symmetric positive definite),
 //   product(k, r)         (W r)_k for the current r,
-//   changed(k, delta)     r_k moved by delta (the factored form keeps H^T r per body up to date),
+//   changed(k, delta)     r_k moved by delta (the factored form keeps M H^T r per body up to date),
 //   velocities(r)         W r, all contacts (the residual).
 #include <algorithm>
 #include <cmath>

@@ -14,34 +14,49 @@ namespace {
 
 std::string contact_name(std::size_t k) { return "contact " + std::to_string(k); }
 
-void validate(const FactoredDelassus& W, const VecX& b, const VecX& mu) {
+void validate_weights(const FactoredDelassus& W) {
   for (std::size_t body = 0; body < W.body_weights.size(); ++body) {
     const VecX& m = W.body_weights[body];
     if (!(m.allFinite() && (m.array() > 0.0).all()))
       throw InputError("body_weights", "invalid parameter 'body_weights': the weights of body " + std::to_string(body) +
                                            " must be finite and > 0");
   }
-  const std::size_t n = W.sides.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const auto& sides = W.sides[k];
-    if (sides.empty() || sides.size() > 2 || (sides.size() == 2 && sides[0].body == sides[1].body))
+}
+
+void validate_contact(const FactoredDelassus& W, std::size_t k) {
+  if (k >= W.sides.size())
+    throw InputError("contact", "invalid parameter 'contact': " + std::to_string(k) + ", must be below " +
+                                    std::to_string(W.sides.size()));
+  const auto& sides = W.sides[k];
+  if (sides.empty() || sides.size() > 2 || (sides.size() == 2 && sides[0].body == sides[1].body))
+    throw InputError("sides", "invalid parameter 'sides': " + contact_name(k) +
+                                  " must act on one body or on two distinct bodies");
+  for (const ContactSide& side : sides) {
+    if (side.body >= W.body_weights.size())
+      throw InputError("sides", "invalid parameter 'sides': " + contact_name(k) + " names body " +
+                                    std::to_string(side.body) + ", must be below " +
+                                    std::to_string(W.body_weights.size()));
+    if (side.rows.cols() < 1 || side.rows.cols() > W.body_weights[side.body].size() || !side.rows.allFinite())
       throw InputError("sides", "invalid parameter 'sides': " + contact_name(k) +
-                                    " must act on one body or on two distinct bodies");
-    for (const ContactSide& side : sides) {
-      if (side.body >= W.body_weights.size())
-        throw InputError("sides", "invalid parameter 'sides': " + contact_name(k) + " names body " +
-                                      std::to_string(side.body) + ", must be below " +
-                                      std::to_string(W.body_weights.size()));
-      if (side.rows.cols() < 1 || side.rows.cols() > W.body_weights[side.body].size() || !side.rows.allFinite())
-        throw InputError("sides", "invalid parameter 'sides': " + contact_name(k) + " must have 3 x m finite rows, 1 <= m <= " +
-                                      std::to_string(W.body_weights[side.body].size()) + " on body " +
-                                      std::to_string(side.body));
-    }
+                                    " must have 3 x m finite rows, 1 <= m <= " +
+                                    std::to_string(W.body_weights[side.body].size()) + " on body " +
+                                    std::to_string(side.body));
   }
+}
+
+void validate_factors(const FactoredDelassus& W) {
+  validate_weights(W);
+  const std::size_t n = W.sides.size();
+  for (std::size_t k = 0; k < n; ++k) validate_contact(W, k);
   if (W.compliance.size() != 0 &&
       (W.compliance.size() != Eigen::Index(n) || !W.compliance.allFinite() || (W.compliance.array() < 0.0).any()))
     throw InputError("compliance", "invalid parameter 'compliance': must be empty or hold one finite value >= 0 per "
                                    "contact (" + std::to_string(n) + ")");
+}
+
+void validate(const FactoredDelassus& W, const VecX& b, const VecX& mu) {
+  validate_factors(W);
+  const std::size_t n = W.sides.size();
   if (b.size() != Eigen::Index(3 * n) || !b.allFinite())
     throw InputError("b", "invalid parameter 'b': must hold " + std::to_string(3 * n) + " finite values (3 per contact)");
   if (mu.size() != Eigen::Index(n))
@@ -93,6 +108,9 @@ class FactoredOperator {
 }  // namespace
 
 Mat3 diagonal_block(const FactoredDelassus& W, std::size_t contact) {
+  validate_contact(W, contact);
+  if (W.compliance.size() != 0 && Eigen::Index(contact) >= W.compliance.size())
+    throw InputError("compliance", "invalid parameter 'compliance': no value for " + contact_name(contact));
   Mat3 block = Mat3::Zero();
   for (const ContactSide& side : W.sides[contact])
     block.noalias() += side.rows * W.body_weights[side.body].head(side.rows.cols()).asDiagonal() * side.rows.transpose();
@@ -101,6 +119,7 @@ Mat3 diagonal_block(const FactoredDelassus& W, std::size_t contact) {
 }
 
 VecX apply(const FactoredDelassus& W, const VecX& r) {
+  validate_factors(W);
   if (r.size() != Eigen::Index(3 * W.sides.size()))
     throw InputError("r", "invalid parameter 'r': must hold " + std::to_string(3 * W.sides.size()) +
                               " values (3 per contact)");

@@ -343,6 +343,11 @@ TEST(ConeComplementarity, TheFactoredOperatorRefusesMalformedFactors) {
             }),
             "W");
   EXPECT_THROW(contact::apply(f.factors, VecX::Zero(4)), rodvv::InputError);
+  EXPECT_THROW(contact::diagonal_block(f.factors, 6), rodvv::InputError);  // six contacts
+  contact::FactoredDelassus broken = f.factors;
+  broken.sides[2][0].body = 7;
+  EXPECT_THROW(contact::apply(broken, VecX::Zero(3 * n)), rodvv::InputError);
+  EXPECT_THROW(contact::diagonal_block(broken, 2), rodvv::InputError);
 }
 
 TEST(ConeComplementarity, RefusesMalformedProblems) {

@@ -4,8 +4,9 @@
 //   W = sum_b H_b M_b H_b^T + diag(c_k I_3),
 //
 // bodies b with n_b degrees of freedom and a positive diagonal weight M_b (an inverse mass matrix; the
-// inverse statics' K^-2), contacts k touching one body (an obstacle) or two (two rods), each side a
-// dense 3 x n_b row block H_kb in the contact's frame (normal first) signed for the force on that body,
+// inverse statics' K^-2), contacts k touching one body (an obstacle) or two (two rods), each side the
+// leading columns of a 3 x n_b row block H_kb in the contact's frame (normal first), signed for the
+// force on that body,
 // c_k >= 0 a compliance or regularisation. W is never formed (10^4 contacts would make it 7 GB dense):
 // the block Gauss-Seidel of cone_complementarity.hpp keeps y_b = M_b H_b^T r per body, so
 // (W r)_k = sum_sides H_kb y_b + c_k r_k and the update after a local solve cost O(n_b) each, a sweep
@@ -37,8 +38,10 @@ struct FactoredDelassus {
   VecX compliance;                              // c_k per contact; empty: none
 };
 
+// W_kk of one contact (its sides checked as above; "contact" out of range) and W r (the factors checked
+// as above; "r" of another size than 3 per contact).
 Mat3 diagonal_block(const FactoredDelassus& W, std::size_t contact);
-VecX apply(const FactoredDelassus& W, const VecX& r);  // W r
+VecX apply(const FactoredDelassus& W, const VecX& r);
 
 ConeSolution solve_cone_complementarity(const FactoredDelassus& W, const VecX& b, const VecX& mu, ConeLaw law,
                                         const ConeSettings& settings = {});
