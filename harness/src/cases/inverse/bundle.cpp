@@ -82,14 +82,14 @@ sh::RodModel meridian_strand(const Parameters& p, const Vec3& centre, double rho
   return m;
 }
 
-Bundle bundle_of(const Parameters& p, std::size_t pairs, std::size_t first_pair = 0) {
+Bundle bundle_of(const Parameters& p, std::size_t pairs) {
   const double L = parameter_value(p, "L"), R = parameter_value(p, "R"), a = parameter_value(p, "a");
   const double mu = parameter_value(p, "mu");
   const auto N = std::size_t(parameter_value(p, "N"));
   const Vec3 centre = Vec3(0.3, -0.2, 0.1) * L;
   const double inner = R + a, outer = R + 3.0 * a;
   Bundle bundle;
-  for (std::size_t pair = first_pair; pair < first_pair + pairs; ++pair) {
+  for (std::size_t pair = 0; pair < pairs; ++pair) {
     const double azimuth = 2.0 * kPi * (double(pair) + 0.3) / double(pairs);
     // theta_p spread over [15, 30) degrees in an order unrelated to the azimuth (7 is prime to most P)
     const double theta = kFirstPolarAngle + kPolarSpread * double((7 * pair) % pairs) / double(pairs);
@@ -157,7 +157,8 @@ LevelOutput run(const Parameters& p, double level) {
   alone.contacts.resize(2 * std::size_t(parameter_value(p, "N")));
   const sh::InverseBundleResult single = solve(alone, gamma);
   const VecX in_bundle = inverse.local_forces.head(single.local_forces.size());
-  // gamma is relative to the mean diagonal over the contacts solved: the same per pair, the same here
+  // gamma is relative to the mean diagonal of W over the contacts solved: every pair is the same pair
+  // turned rigidly (W's trace does not see the turn), so the same gamma alone as in the bundle
   out.metrics["pair_consistency"] = value_sample(
       (in_bundle - single.local_forces).lpNorm<Eigen::Infinity>() / single.local_forces.lpNorm<Eigen::Infinity>(), 1.0);
   return out;
