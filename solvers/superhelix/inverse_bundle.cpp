@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "contact_checks.hpp"
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
 #include "rodvv/solvers/contact/factored_delassus.hpp"
@@ -36,12 +37,7 @@ void check_contacts(const std::vector<RodModel>& strands, const std::vector<Bund
                                          " joins Gauss point " + std::to_string(c.point) + " of strand " +
                                          std::to_string(c.strand) + " to itself");
     }
-    if (!c.normal.allFinite() || !(std::abs(c.normal.norm() - 1.0) <= 1e-10))
-      throw InputError("contacts", "invalid parameter 'contacts': the normal of contact " + std::to_string(k) +
-                                       " must be a finite unit vector (|n| - 1 within 1e-10)");
-    if (!(std::isfinite(c.mu) && c.mu > 0.0))
-      throw InputError("mu", "invalid parameter 'mu' of contact " + std::to_string(k) + " = " + format_value(c.mu) +
-                                 ": must be finite and > 0");
+    detail::check_contact_normal_and_mu(k, c.normal, c.mu);
   }
 }
 

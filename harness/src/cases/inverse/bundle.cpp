@@ -34,6 +34,7 @@
 
 #include "../case_builder.hpp"
 #include "forward_round_trip.hpp"
+#include "hair_on_head.hpp"
 #include "inverse_cases.hpp"
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
@@ -202,26 +203,13 @@ void add_bundle(Registry& registry) {
        make_parameter("gamma", 1e-3, 1e-3, 1.0, false, false, "", "SOCQP regularisation, relative to the mean diagonal of sum H K^-2 H^T")},
       Resolution{"P", "strand pairs", ResolutionScale::Count, {2, 8, 32}, {2, 8, 32, 128, 313}}, std::move(metrics),
       std::move(gates), run);
-  // As round-trip-sphere (measured there, the same forward statics): world positions of size R cost lever
-  // arms R / L of their precision, and the forward Newton returns up to a weight of 1e8.
-  require_window(c, "R / L <= 100 (world positions at the rod's scale)", [](const Parameters& p) {
-    const double ratio = parameter_value(p, "R") / parameter_value(p, "L");
-    if (!(ratio <= 100.0))
-      throw InputError("R", "invalid parameters: R / L = " + format_value(ratio) +
-                                " must be <= 100 (positions of the order of R lose R / L of their relative precision)");
-  });
+  require_hair_on_head_windows(c);  // as round-trip-sphere: the same forward statics
   require_window(c, "L / (R + a) <= 2.35 (the strands end 15 degrees above the head's bottom)", [](const Parameters& p) {
     const double span = parameter_value(p, "L") / (parameter_value(p, "R") + parameter_value(p, "a"));
     if (!(span <= 2.35))
       throw InputError("L", "invalid parameters: L / (R + a) = " + format_value(span) +
                                 " must be <= 2.35 (from at most 30 degrees below the top, the strands must end 15 degrees "
                                 "above the bottom, where the meridians meet again)");
-  });
-  require_window(c, "rhoS g L^3 / EI <= 1e8 (where the forward Newton returns)", [](const Parameters& p) {
-    const double L = parameter_value(p, "L");
-    const double w = parameter_value(p, "rhoS") * parameter_value(p, "g") * L * L * L / parameter_value(p, "EI");
-    if (!(w <= 1e8))
-      throw InputError("g", "invalid parameters: the weight rhoS g L^3 / EI = " + format_value(w) + " must be <= 1e8");
   });
   registry.add(std::move(c));
 }

@@ -35,6 +35,7 @@
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
 #include "forward_round_trip.hpp"
+#include "hair_on_head.hpp"
 #include "inverse_cases.hpp"
 #include "rodvv/solvers/superhelix/inverse_contact.hpp"
 #include "rodvv/solvers/superhelix/kinematics.hpp"
@@ -159,21 +160,7 @@ void add_round_trip_sphere(Registry& registry) {
        // below 1e-3 the Gauss-Seidel needs more than 20 000 sweeps at N = 32 (3.6e-8 after them at 1e-5)
        make_parameter("gamma", 1e-3, 1e-3, 1.0, false, false, "", "SOCQP regularisation, relative to the mean diagonal of H K^-2 H^T")},
       element_levels("number of elements", {8, 16, 32}, {8, 16, 32, 64}), std::move(metrics), std::move(gates), run);
-  // Measured 2026-11-26 (every other parameter at its default): the world positions carry eps |R|, so
-  // lever arms lose |R| / L in relative precision: R/L = 160 passes, 400 fails the residual (33 eps);
-  // the weight rhoS g L^3 / EI passes at 7.8e7 (g = 1e8), Newton fails at 7.8e9.
-  require_window(c, "R / L <= 100 (world positions at the rod's scale)", [](const Parameters& p) {
-    const double ratio = parameter_value(p, "R") / parameter_value(p, "L");
-    if (!(ratio <= 100.0))
-      throw InputError("R", "invalid parameters: R / L = " + format_value(ratio) +
-                                " must be <= 100 (positions of the order of R lose R / L of their relative precision)");
-  });
-  require_window(c, "rhoS g L^3 / EI <= 1e8 (where the forward Newton returns)", [](const Parameters& p) {
-    const double L = parameter_value(p, "L");
-    const double w = parameter_value(p, "rhoS") * parameter_value(p, "g") * L * L * L / parameter_value(p, "EI");
-    if (!(w <= 1e8))
-      throw InputError("g", "invalid parameters: the weight rhoS g L^3 / EI = " + format_value(w) + " must be <= 1e8");
-  });
+  require_hair_on_head_windows(c);
   registry.add(std::move(c));
 }
 
