@@ -84,15 +84,17 @@ InverseBundleResult inverse_statics_of_bundle(const std::vector<RodModel>& stran
   check_contacts(strands, contacts);
   require_positive("gamma", options.gamma);
 
-  // Per strand: its kinematics at the target (checks q), K^-1 and the weight K^-2 of the factored W.
+  // Per strand: its kinematics at the target (checks q), K^-1, the weight K^-2 of the factored W and
+  // K^-2 F, which b takes from every contact on the strand.
   std::vector<Kinematics> kinematics;
-  std::vector<VecX> compliance, force;
+  std::vector<VecX> compliance, force, weighted_force;
   contact::FactoredDelassus W;
   for (std::size_t s = 0; s < strands.size(); ++s) {
     kinematics.emplace_back(strands[s], q[s]);
     compliance.push_back(generalised_stiffness(strands[s]).cwiseInverse());
     force.push_back(external_generalised_force(strands[s], kinematics[s]));
     W.body_weights.push_back(compliance[s].cwiseAbs2());
+    weighted_force.push_back(W.body_weights[s].cwiseProduct(force[s]));
   }
   check_normals(kinematics, contacts);
   const auto m = Eigen::Index(contacts.size());
@@ -116,7 +118,7 @@ InverseBundleResult inverse_statics_of_bundle(const std::vector<RodModel>& stran
     }
     // b = sum_s H_s K_s^-2 F_s (the header's z_s = -K_s^-1 F_s with q0bar = q).
     for (const contact::ContactSide& side : sides)
-      b.segment<3>(3 * k) += side.rows * W.body_weights[side.body].cwiseProduct(force[side.body]).head(side.rows.cols());
+      b.segment<3>(3 * k) += side.rows * weighted_force[side.body].head(side.rows.cols());
     W.sides.push_back(std::move(sides));
     trace += contact::diagonal_block(W, std::size_t(k)).trace();
   }
@@ -152,9 +154,7 @@ std::vector<RodModel> bundle_rest_models(const std::vector<RodModel>& strands,
     if (result.natural_strain[s].size() != Eigen::Index(dof_count(model)))
       throw InputError("result", "invalid parameter 'result': the rest shape of strand " + std::to_string(s) +
                                      " must hold " + std::to_string(dof_count(model)) + " values");
-    model.natural_strain_per_element.resize(model.elements);
-    for (std::size_t e = 0; e < model.elements; ++e)
-      model.natural_strain_per_element[e] = result.natural_strain[s].segment<3>(Eigen::Index(3 * e));
+    set_natural_strain_vector(model, result.natural_strain[s]);
     model.point_forces.assign(model.elements * model.gauss_points, Vec3::Zero());
   }
   for (std::size_t k = 0; k < contacts.size(); ++k) {

@@ -82,9 +82,7 @@ InverseContactResult inverse_statics_with_contacts(const RodModel& model, const 
 RodModel contact_model(const RodModel& model, const std::vector<RodContact>& contacts,
                        const InverseContactResult& result) {
   RodModel at_rest = model;
-  at_rest.natural_strain_per_element.resize(model.elements);
-  for (std::size_t e = 0; e < model.elements; ++e)
-    at_rest.natural_strain_per_element[e] = result.natural_strain.segment<3>(Eigen::Index(3 * e));
+  set_natural_strain_vector(at_rest, result.natural_strain);
   at_rest.point_forces.assign(model.elements * model.gauss_points, Vec3::Zero());
   for (std::size_t c = 0; c < contacts.size(); ++c) at_rest.point_forces[contacts[c].point] += result.forces[c];
   return at_rest;

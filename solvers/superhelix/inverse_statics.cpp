@@ -77,8 +77,7 @@ RodModel model_at_rest_in(const RodModel& model, const VecX& q, double stiffness
   RodModel scaled = model;
   scaled.stiffness *= stiffness_factor;
   const VecX q0 = natural_strain_for(scaled, q);
-  scaled.natural_strain_per_element.resize(model.elements);
-  for (std::size_t e = 0; e < model.elements; ++e) scaled.natural_strain_per_element[e] = q0.segment<3>(Eigen::Index(3 * e));
+  set_natural_strain_vector(scaled, q0);
   return scaled;
 }
 

@@ -108,6 +108,14 @@ VecX natural_strain_vector(const RodModel& model) {
   return q0;
 }
 
+void set_natural_strain_vector(RodModel& model, const VecX& q0) {
+  if (q0.size() != Eigen::Index(dof_count(model)))
+    throw InputError("natural_strain", "invalid parameter 'natural_strain': must hold 3 N = " +
+                                           std::to_string(dof_count(model)) + " values, got " + std::to_string(q0.size()));
+  model.natural_strain_per_element.resize(model.elements);
+  for (std::size_t e = 0; e < model.elements; ++e) model.natural_strain_per_element[e] = q0.segment<3>(Eigen::Index(3 * e));
+}
+
 VecX generalised_stiffness(const RodModel& model) {
   VecX k(dof_count(model));
   const double ell = element_length(model);

@@ -172,4 +172,12 @@ TEST(SuperHelixInverseStatics, RefusesWhatItCannotDo) {
   EXPECT_EQ(parameter_of([&] { sh::natural_strain_for(moment, q); }), "none");  // q0 is still defined
 }
 
+TEST(SuperHelixInverseStatics, NaturalStrainVectorRoundTrips) {
+  sh::RodModel model = hair(6);
+  const VecX q0 = curl(6);
+  sh::set_natural_strain_vector(model, q0);
+  EXPECT_EQ(sh::natural_strain_vector(model), q0);
+  EXPECT_THROW(sh::set_natural_strain_vector(model, VecX::Zero(17)), rodvv::InputError);
+}
+
 }  // namespace

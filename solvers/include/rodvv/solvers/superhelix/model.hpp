@@ -89,8 +89,10 @@ inline std::size_t dof_count(const RodModel& model) { return 3 * model.elements;
 
 // q0 of element Q.
 Vec3 natural_strain(const RodModel& model, std::size_t element);
-// q0 as one vector of 3N values.
+// q0 as one vector of 3N values, and back: natural_strain_per_element from 3N values (InputError
+// "natural_strain" for another size).
 VecX natural_strain_vector(const RodModel& model);
+void set_natural_strain_vector(RodModel& model, const VecX& q0);
 // Diagonal of the generalised stiffness K_Q = diag(GJ, EI1, EI2) * ell_Q, as 3N values
 // (U_elastic = 1/2 (q - q0)^T diag(K) (q - q0), ALGORITHMS.md §1.4).
 VecX generalised_stiffness(const RodModel& model);
