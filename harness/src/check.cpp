@@ -68,13 +68,19 @@ SweepResult check_solutions(const Case& c, const Parameters& parameters, std::ve
                                                         ? "a whole number >= 1"
                                                         : "finite and > 0"));
   }
-  // A rod at N elements has N + 1 nodes (vertices): a file whose count disagrees with its declared N
-  // would be fitted at the wrong h.
+  // A rod at N elements has N + 1 nodes (vertices; in every snapshot of a trajectory): a file whose count
+  // disagrees with its declared N would be fitted at the wrong h.
   if (resolution.scale == ResolutionScale::Count)
     for (const auto& solution : solutions) {
       std::size_t nodes = 0;
       if (const auto* planar = std::get_if<PlanarRodSolution>(&solution.solution)) nodes = planar->nodes();
       if (const auto* spatial = std::get_if<SpatialRodSolution>(&solution.solution)) nodes = spatial->vertex_s.size();
+      if (const auto* trajectory = std::get_if<RodTrajectory>(&solution.solution))
+        for (const auto& snapshot : trajectory->snapshots)  // the first snapshot whose count disagrees, if any
+          if (double(snapshot.s.size()) != solution.level + 1.0) {
+            nodes = snapshot.s.size();
+            break;
+          }
       if (nodes != 0 && double(nodes) != solution.level + 1.0)
         throw InputError(resolution.name, fmt::format("{}: {} = {} elements, but the rod has {} nodes (N + 1 expected)",
                                                       solution.source, resolution.name, format_value(solution.level),

@@ -92,6 +92,25 @@ double cantilever_frequency(std::size_t n, double EI, double line_density, doubl
   return beta * beta * std::sqrt(EI / (line_density * L * L * L * L));
 }
 
+ModeShapePoint cantilever_mode_shape(std::size_t n, double x) {
+  require_at_least("n", n, 1);
+  if (n > 50) throw InputError("n", "invalid n = " + std::to_string(n) + ": the mode number must be in [1, 50]");
+  if (!(x >= 0.0 && x <= 1.0))
+    throw InputError("x", "invalid x = " + std::to_string(x) + ": the station s / L must be in [0, 1]");
+  const double b = cantilever_beta_l(n), d = std::sinh(b) + std::sin(b);
+  const double sigma = (std::cosh(b) + std::cos(b)) / d;
+  // cosh bx - sigma sinh bx and sinh bx - sigma cosh bx, each over d without the cancelling products.
+  const auto hyperbolic = [&](double y) {
+    return (std::sinh(b * (1.0 - y)) + std::cosh(b * y) * std::sin(b) - std::sinh(b * y) * std::cos(b)) / d;
+  };
+  const auto hyperbolic_slope = [&](double y) {
+    return (-std::cosh(b * (1.0 - y)) + std::sinh(b * y) * std::sin(b) - std::cosh(b * y) * std::cos(b)) / d;
+  };
+  const auto phi = [&](double y) { return hyperbolic(y) - std::cos(b * y) + sigma * std::sin(b * y); };
+  const double tip = phi(1.0);
+  return {phi(x) / tip, b * (hyperbolic_slope(x) + std::sin(b * x) + sigma * std::cos(b * x)) / tip};
+}
+
 RollUpPoint end_moment_roll_up_point(const EndMomentRollUp& rod, double s) {
   require_positive("L", rod.L);
   require_positive("EI", rod.EI);

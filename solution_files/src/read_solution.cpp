@@ -1,5 +1,6 @@
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <optional>
 #include <fstream>
 #include <sstream>
@@ -281,6 +282,50 @@ Trajectory read_trajectory(const JsonCursor& trajectory, const std::filesystem::
   return result;
 }
 
+// A 3-D rod's trajectory in long form: one row per vertex and time, the rows of one snapshot together
+// (equal t, s increasing from 0), the snapshots in increasing t.
+RodTrajectory read_rod_trajectory(const JsonCursor& trajectory, const std::filesystem::path& directory,
+                                  const SolutionFile& file) {
+  trajectory.expect_object({"samples", "samples_csv", "steps"});
+  std::vector<std::string> known{"t", "s"};
+  for (auto& name : vector_columns("position", kWorldAxes)) known.push_back(name);
+  const ColumnTable samples = read_columns(trajectory, "samples", "samples_csv", directory, known);
+  const std::vector<double> t = required(samples, "t"), s = required(samples, "s");
+  const std::vector<Vec3> position = required_vectors(samples, "position", kWorldAxes);
+  RodTrajectory result;
+  result.method = file.solver;
+  for (std::size_t row = 0; row < t.size();) {
+    std::size_t end = row;
+    while (end < t.size() && t[end] == t[row]) ++end;
+    if (!result.t.empty() && !(t[row] > result.t.back()))
+      throw InputError("solution", fmt::format("{}: row {}: t = {} follows the snapshot at t = {}; the snapshots must "
+                                               "come in strictly increasing t, each one's rows together",
+                                               samples.where, row, t[row], result.t.back()));
+    RodSnapshot snapshot;
+    snapshot.s.assign(s.begin() + std::ptrdiff_t(row), s.begin() + std::ptrdiff_t(end));
+    snapshot.position.assign(position.begin() + std::ptrdiff_t(row), position.begin() + std::ptrdiff_t(end));
+    if (snapshot.s.size() < 2)
+      throw InputError("solution", fmt::format("{}: rows {} .. {}: the snapshot at t = {} has {} vertex; at least 2 "
+                                               "are needed",
+                                               samples.where, row, end - 1, t[row], snapshot.s.size()));
+    for (std::size_t i = 1; i < snapshot.s.size(); ++i)
+      if (!(snapshot.s[i] > snapshot.s[i - 1]))
+        throw InputError("solution", fmt::format("{}: row {}: s = {} follows s = {} in the snapshot at t = {}; s must "
+                                                 "increase strictly along a snapshot",
+                                                 samples.where, row + i, snapshot.s[i], snapshot.s[i - 1], t[row]));
+    if (std::abs(snapshot.s.front()) > 1e-12 * snapshot.s.back())
+      throw InputError("solution", fmt::format("{}: row {}: s = {}: the arclength of the snapshot at t = {} must start "
+                                               "at 0 (the clamped end)",
+                                               samples.where, row, snapshot.s.front(), t[row]));
+    result.t.push_back(t[row]);
+    result.snapshots.push_back(std::move(snapshot));
+    row = end;
+  }
+  if (result.t.empty()) throw InputError("solution", fmt::format("{}: no samples", samples.where));
+  if (trajectory.has("steps")) result.steps = trajectory.field("steps").count();
+  return result;
+}
+
 }  // namespace
 
 SolutionFile parse_solution(std::string_view json_text, const std::string& source,
@@ -298,7 +343,7 @@ SolutionFile parse_solution(std::string_view json_text, const std::string& sourc
   const JsonCursor root(document, "$", source);
   root.expect_object(
       {"format", "version", "case", "parameters", "resolution", "solver", "cpu_seconds", "wall_seconds", "planar_rod",
-       "spatial_rod", "trajectory"});
+       "spatial_rod", "trajectory", "rod_trajectory"});
   if (root.field("format").string() != kFormatName)
     root.field("format").fail(fmt::format("expected \"{}\"", kFormatName));
   const JsonCursor version = root.field("version");
@@ -328,14 +373,18 @@ SolutionFile parse_solution(std::string_view json_text, const std::string& sourc
       if (*target < 0.0) root.field(key).fail("expected a time >= 0");
     }
 
-  const int kinds = root.has("planar_rod") + root.has("spatial_rod") + root.has("trajectory");
-  if (kinds != 1) root.fail("expected exactly one solution: \"planar_rod\", \"spatial_rod\" or \"trajectory\"");
+  const int kinds =
+      root.has("planar_rod") + root.has("spatial_rod") + root.has("trajectory") + root.has("rod_trajectory");
+  if (kinds != 1)
+    root.fail("expected exactly one solution: \"planar_rod\", \"spatial_rod\", \"trajectory\" or \"rod_trajectory\"");
   if (root.has("planar_rod"))
     file.solution = read_planar(root.field("planar_rod"), directory, file);
   else if (root.has("spatial_rod"))
     file.solution = read_spatial(root.field("spatial_rod"), directory, file);
-  else
+  else if (root.has("trajectory"))
     file.solution = read_trajectory(root.field("trajectory"), directory);
+  else
+    file.solution = read_rod_trajectory(root.field("rod_trajectory"), directory, file);
   return file;
 }
 

@@ -103,6 +103,26 @@ ordered_json trajectory_json(const Trajectory& trajectory) {
   return result;
 }
 
+// Long form: one row per vertex and snapshot (read_solution.cpp, read_rod_trajectory).
+ordered_json rod_trajectory_json(const RodTrajectory& trajectory) {
+  std::vector<double> t, s;
+  std::vector<Vec3> position;
+  for (std::size_t k = 0; k < trajectory.size(); ++k) {
+    const RodSnapshot& snapshot = trajectory.snapshots[k];
+    t.insert(t.end(), snapshot.s.size(), trajectory.t[k]);
+    s.insert(s.end(), snapshot.s.begin(), snapshot.s.end());
+    position.insert(position.end(), snapshot.position.begin(), snapshot.position.end());
+  }
+  ordered_json samples;
+  samples["t"] = std::move(t);
+  samples["s"] = std::move(s);
+  put_vectors(samples, "position", kWorldAxes, position);
+  ordered_json result;
+  result["steps"] = trajectory.steps;
+  result["samples"] = std::move(samples);
+  return result;
+}
+
 }  // namespace
 
 std::string format_solution(const SolutionFile& file) {
@@ -127,8 +147,10 @@ std::string format_solution(const SolutionFile& file) {
     document["planar_rod"] = planar_json(*planar);
   else if (const auto* spatial = std::get_if<SpatialRodSolution>(&file.solution))
     document["spatial_rod"] = spatial_json(*spatial);
+  else if (const auto* trajectory = std::get_if<Trajectory>(&file.solution))
+    document["trajectory"] = trajectory_json(*trajectory);
   else
-    document["trajectory"] = trajectory_json(std::get<Trajectory>(file.solution));
+    document["rod_trajectory"] = rod_trajectory_json(std::get<RodTrajectory>(file.solution));
   return document.dump(1) + "\n";
 }
 

@@ -4,6 +4,8 @@
 Independent of the C++ formulas:
   * beta_n L: mpmath.findroot (secant, 40 digits) on 1 + cos(x) cosh(x) = 0 from (n - 1/2) pi
     (the C++ code bisects cos x + sech x in double precision);
+  * the clamped-free mode shape phi(x) / phi(1) in the textbook form and its slope by mpmath.diff (the C++
+    code rewrites the hyperbolic part so that it cancels no digits, and differentiates by hand);
   * helix under an axial wrench: the helix r(s) = (R cos phi, R sin phi, s cos a), phi = s sin a / R,
     is differentiated numerically by mpmath.diff (curvature |r''|, torsion (r' x r'').r''' / k^2);
     the force n = lambda Omega follows from body equilibrium u x K(u - u_hat) + lambda e0 x u = 0
@@ -29,6 +31,18 @@ mp.mp.dps = 40
 
 def beta_root(n):
     return mp.findroot(lambda x: 1 + mp.cos(x) * mp.cosh(x), (n - mp.mpf(1) / 2) * mp.pi)
+
+
+def mode_shape(n, x):
+    """The clamped-free mode in the textbook form (40 digits leave it no cancellation), scaled to 1 at the tip,
+    and its slope by mpmath.diff."""
+    b = beta_root(n)
+    sigma = (mp.cosh(b) + mp.cos(b)) / (mp.sinh(b) + mp.sin(b))
+
+    def phi(y):
+        return mp.cosh(b * y) - mp.cos(b * y) - sigma * (mp.sinh(b * y) - mp.sin(b * y))
+
+    return phi(mp.mpf(x)) / phi(1), mp.diff(phi, mp.mpf(x)) / phi(1)
 
 
 def helix_values(B, C, R, a, Mt):
@@ -169,6 +183,11 @@ print("# component for cosserat_position (0..2) and cosserat_frame (3 row + colu
 print("quantity,index,B,C,radius,pitch_angle,twisting_moment,GA,EA,u0,u1,u2,s,value")
 for n in range(1, 7):
     print(f"beta_l,{n},,,,,,,,,,,,{mp.nstr(beta_root(n), 25)}")
+for n in (1, 2, 3, 7):
+    for x in (0.13, 0.45, 0.87, 1.0):
+        shape, slope = mode_shape(n, x)
+        print(f"mode_shape,{n},,,,,,,,,,,{x!r},{mp.nstr(shape, 25)}")
+        print(f"mode_slope,{n},,,,,,,,,,,{x!r},{mp.nstr(slope, 25)}")
 for (B, C, R, a, Mt) in [(1.3, 0.9, 0.7, 0.6, 0.37), (1.0, 0.7, 1.0, 0.3, 0.0), (2.0, 1.5, 0.25, 1.2, -0.8),
                          (1.3, 0.8, 2.0, 0.05, 0.1)]:
     values = helix_values(repr(B), repr(C), repr(R), repr(a), repr(Mt))

@@ -144,6 +144,74 @@ TEST(Check, SpatialRodSolutionsThroughFilesReproduceTheSweepExactly) {
   }));
 }
 
+// A 3-D dynamic case: rodvv's nodal rod's trajectories (vertex positions in time) through files give the
+// sweep's metrics bit for bit, and the order gates pass.
+TEST(Check, RodTrajectoriesThroughFilesReproduceTheSweepExactly) {
+  const Case& c = *default_registry().find("rod3d/skew-vibration");
+  const Parameters& p = c.info.parameters;
+  const std::vector<double> levels{8, 16, 32};
+  const SweepResult sweep = run_sweep(c, p, levels);
+  const SweepResult checked = check_solutions(c, p, solutions_of(c, p, levels), {});
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    ASSERT_EQ(checked.levels[i].metrics.size(), sweep.levels[i].metrics.size());
+    for (const auto& [metric, sample] : sweep.levels[i].metrics)
+      EXPECT_EQ(checked.levels[i].metrics.at(metric).computed, sample.computed) << metric;
+  }
+  std::size_t orders = 0;
+  for (const auto& gate : checked.gates) {
+    EXPECT_TRUE(gate.passed) << gate.name << ": " << gate.reason;
+    orders += gate.kind == GateKind::Order;
+  }
+  EXPECT_EQ(orders, 3u);
+}
+
+// Another solver that swaps EI1 and EI2 (each plane vibrating at the other's frequency) converges, but to
+// the wrong motion: its tip errors stay O(1) and the order gates turn red.
+TEST(Check, ATrajectoryWithSwappedStiffnessesTurnsRed) {
+  const Case& c = *default_registry().find("rod3d/skew-vibration");
+  const Parameters& p = c.info.parameters;
+  Parameters swapped = p;
+  for (auto& parameter : swapped) {
+    if (parameter.name == "EI1") parameter.value = parameter_value(p, "EI2");
+    if (parameter.name == "EI2") parameter.value = parameter_value(p, "EI1");
+  }
+  std::vector<LevelSolution> solutions;
+  for (double level : {8.0, 16.0, 32.0}) solutions.push_back({"swapped", level, c.solve(swapped, level), "x"});
+  const SweepResult checked = check_solutions(c, p, solutions, {});
+  EXPECT_GT(checked.levels.back().metrics.at("tip_error").computed, 0.1);
+  const GateResult* order = gate_named(checked, "tip_error");
+  ASSERT_NE(order, nullptr);
+  EXPECT_FALSE(order->passed);
+}
+
+// What cannot show the motion is refused, naming why: a trajectory that stops early, gaps between
+// snapshots that could hide the peaks, snapshots whose vertex count disagrees with N.
+TEST(Check, ARodTrajectoryMustCoverTheMotion) {
+  const Case& c = *default_registry().find("rod3d/skew-vibration");
+  const Parameters& p = c.info.parameters;
+  const Solution full = c.solve(p, 8);
+  {
+    Solution half = full;
+    auto& trajectory = std::get<RodTrajectory>(half);
+    trajectory.t.resize(trajectory.size() / 2);
+    trajectory.snapshots.resize(trajectory.t.size());
+    const std::string message = refusal(c, p, {{"short.json", 8, half, "x"}}, "a half trajectory");
+    EXPECT_NE(message.find("short.json: the trajectory ends at t = "), std::string::npos) << message;
+  }
+  {
+    Solution sparse = full;
+    auto& trajectory = std::get<RodTrajectory>(sparse);
+    trajectory.t.erase(trajectory.t.begin() + 1, trajectory.t.begin() + 4);
+    trajectory.snapshots.erase(trajectory.snapshots.begin() + 1, trajectory.snapshots.begin() + 4);
+    const std::string message = refusal(c, p, {{"sparse.json", 8, sparse, "x"}}, "a gap of four samples");
+    EXPECT_NE(message.find("gaps must not exceed an eighth of the faster period"), std::string::npos) << message;
+  }
+  {
+    const std::string message = refusal(c, p, {{"n9.json", 9, full, "x"}}, "a vertex count that disagrees with N");
+    EXPECT_NE(message.find("N = 9 elements, but the rod has 9 nodes"), std::string::npos) << message;
+  }
+}
+
 // The column's midspan values need a node at s = L/2: an odd N is refused, not measured off-centre.
 TEST(Check, PinnedColumnNeedsAMidspanNode) {
   const Case& c = *default_registry().find("elastica/pinned-pinned-60/arcs");

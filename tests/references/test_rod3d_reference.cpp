@@ -5,6 +5,8 @@
 // equilibrium for F, M and H). Tolerances in units of eps relative to max(|expected|, scale):
 //  - beta_n L: bisection to adjacent doubles -> 2 eps (measured 0-1 eps);
 //  - helix kappa, tau, F, M, H: a few trig evaluations and products -> 64 eps (measured <= 8 eps);
+//  - the clamped-free mode shape and slope (mpmath in the textbook form, slope by mp.diff): see
+//    mode_tolerance;
 //  - special Cosserat helix (lambda, advance, radius, axial force and moment, H, position and frame
 //    at s = 1.3; the table solves the 3x3 body equilibrium by findroot and integrates r' = R v,
 //    R' = R [u]x by odefun): a square root, a few products and one Rodrigues rotation -> 64 eps
@@ -32,6 +34,13 @@ using rodvv::testing::parse_table_number;
 
 constexpr const char* kHeader = "quantity,index,B,C,radius,pitch_angle,twisting_moment,GA,EA,u0,u1,u2,s,value";
 constexpr std::size_t kValue = 13;
+// Mode shapes (n = 1, 2, 3, 7): the arguments b x carry b x eps (b = beta_n L, up to 20.5), which the sines and
+// cosines pass on as absolute errors of that size, times the slope's factor b: gated at 2 b^2 eps (7 eps at n = 1,
+// 840 eps at n = 7; measured: see the summary line).
+double mode_tolerance(std::size_t n) {
+  const double b = ref::cantilever_beta_l(n);
+  return 2.0 * b * b;
+}
 
 ref::SpecialCosseratHelix cosserat_rod(const std::vector<std::string>& row) {
   ref::SpecialCosseratHelix rod;
@@ -74,7 +83,7 @@ double helix_quantity(const ref::AxialWrenchHelixSolution& sol, const std::strin
 // Compares every table row, the computed value scaled by (1 + relative_perturbation) (0 for the
 // real test), and returns the worst errors in eps and the number of rows above the tolerance.
 struct TableCheck {
-  double worst_beta = 0.0, worst_helix = 0.0, worst_cosserat = 0.0;
+  double worst_beta = 0.0, worst_helix = 0.0, worst_cosserat = 0.0, worst_mode = 0.0;
   int failures = 0;
   int rows = 0;
 };
@@ -90,6 +99,13 @@ TableCheck check_table(double relative_perturbation) {
       const double error = in_epsilons(actual - expected, expected);
       check.worst_beta = std::max(check.worst_beta, error);
       if (error > 2.0) ++check.failures;
+    } else if (row[0] == "mode_shape" || row[0] == "mode_slope") {
+      const auto n = static_cast<std::size_t>(std::stoi(row[1]));
+      const auto point = ref::cantilever_mode_shape(n, parse_table_number(row[12]));
+      const double actual = (row[0] == "mode_shape" ? point.value : point.slope) * (1.0 + relative_perturbation);
+      const double error = in_epsilons(actual - expected, expected);
+      check.worst_mode = std::max(check.worst_mode, error);
+      if (error > mode_tolerance(n)) ++check.failures;
     } else if (row[0].rfind("cosserat_", 0) == 0) {
       const double actual = cosserat_quantity(row) * (1.0 + relative_perturbation);
       const double error = in_epsilons(actual - expected, expected);
@@ -109,10 +125,32 @@ TableCheck check_table(double relative_perturbation) {
 
 TEST(Rod3dReference, MatchesMpmathTable) {
   const TableCheck check = check_table(0.0);
-  EXPECT_EQ(check.rows, 80);
+  EXPECT_EQ(check.rows, 112);
   EXPECT_EQ(check.failures, 0);
   std::cout << "[ summary  ] beta_n L max " << check.worst_beta << " eps, helix max " << check.worst_helix
-            << " eps, special Cosserat helix max " << check.worst_cosserat << " eps\n";
+            << " eps, special Cosserat helix max " << check.worst_cosserat << " eps, mode shapes max "
+            << check.worst_mode << " eps\n";
+}
+
+// The clamp's conditions (phi(0) = phi'(0) = 0, not in the table: a relative perturbation of 0 stays 0) and the
+// free end's phi''(1) = 0 by a one-sided difference of the slope (step 1e-4: truncation ~1e-8 b^3 phi'(1)).
+TEST(Rod3dReference, ModeShapesMeetTheCantileverEndConditions) {
+  for (std::size_t n : {1, 2, 3, 7}) {
+    const double b = ref::cantilever_beta_l(n);
+    const auto clamp = ref::cantilever_mode_shape(n, 0.0);
+    EXPECT_LE(std::abs(clamp.value), 8.0 * kEpsilon) << n;
+    EXPECT_LE(std::abs(clamp.slope), 8.0 * b * b * kEpsilon) << n;
+    EXPECT_EQ(ref::cantilever_mode_shape(n, 1.0).value, 1.0) << n;
+    const double step = 1e-4;
+    const double s0 = ref::cantilever_mode_shape(n, 1.0).slope, s1 = ref::cantilever_mode_shape(n, 1.0 - step).slope,
+                 s2 = ref::cantilever_mode_shape(n, 1.0 - 2.0 * step).slope;
+    const double curvature = (3.0 * s0 - 4.0 * s1 + s2) / (2.0 * step);  // one-sided, O(step^2)
+    EXPECT_LE(std::abs(curvature), 1e-6 * b * b * std::abs(s0)) << n;
+  }
+  EXPECT_THROW(ref::cantilever_mode_shape(0, 0.5), rodvv::InputError);
+  EXPECT_THROW(ref::cantilever_mode_shape(51, 0.5), rodvv::InputError);
+  EXPECT_THROW(ref::cantilever_mode_shape(1, 1.01), rodvv::InputError);
+  EXPECT_THROW(ref::cantilever_mode_shape(1, std::nan("")), rodvv::InputError);
 }
 
 TEST(Rod3dReference, PerturbedInputTurnsTableRed) {

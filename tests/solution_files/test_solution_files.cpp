@@ -153,6 +153,34 @@ TEST(SolutionFile, SpatialRoundTripIsBitExact) {
   EXPECT_TRUE(back.derived.empty());
 }
 
+// A 3-D rod's trajectory in long form: snapshots with their own vertex counts (a remeshing solver), times and
+// positions that are not short decimals, back bit for bit.
+TEST(SolutionFile, RodTrajectoryRoundTripIsBitExact) {
+  RodTrajectory trajectory;
+  for (int k = 0; k < 4; ++k) {
+    RodSnapshot snapshot;
+    const int vertices = 3 + k;
+    for (int i = 0; i < vertices; ++i) {
+      const double s = 1.3 * i / (vertices - 1);
+      snapshot.s.push_back(s);
+      snapshot.position.push_back(Vec3(s, std::sin(s + k) / 7.0, -1e-300 * k / 3.0));
+    }
+    trajectory.t.push_back(0.1 * k / 3.0);
+    trajectory.snapshots.push_back(std::move(snapshot));
+  }
+  trajectory.steps = 17;
+  const SolutionFile back = parse_solution(format_solution(file_of(trajectory)), "memory", ".");
+  const auto& read = std::get<RodTrajectory>(back.solution);
+  EXPECT_EQ(read.t, trajectory.t);
+  ASSERT_EQ(read.snapshots.size(), trajectory.snapshots.size());
+  for (std::size_t k = 0; k < read.snapshots.size(); ++k) {
+    EXPECT_EQ(read.snapshots[k].s, trajectory.snapshots[k].s);
+    EXPECT_EQ(read.snapshots[k].position, trajectory.snapshots[k].position);
+  }
+  EXPECT_EQ(read.steps, 17u);
+  EXPECT_EQ(read.method, file_of(trajectory).solver);
+}
+
 // A file with positions only, on a circle of radius R (theta = s/R, kappa = 1/R), on a NON-uniform
 // grid: the derived theta and kappa converge at second order, and the file says what was derived.
 TEST(SolutionFile, DerivesThetaAndKappaAtSecondOrder) {
@@ -209,6 +237,11 @@ struct Malformed {
 std::string planar(const std::string& nodes, const std::string& extra = "") {
   return R"({"format": "rodvv-solution", "version": 1, "case": "c", "resolution": {"N": 2}, "planar_rod": {)" +
          extra + R"("nodes": {)" + nodes + "}}}";
+}
+
+std::string rod_trajectory(const std::string& samples) {
+  return R"({"format": "rodvv-solution", "version": 1, "case": "c", "resolution": {"N": 1}, "rod_trajectory": {)"
+         R"("samples": {)" + samples + "}}}";
 }
 
 std::string spatial(const std::string& body) {
@@ -272,6 +305,22 @@ TEST(SolutionFile, MalformedFilesNameWhereAndWhat) {
       {R"({"format": "rodvv-solution", "version": 1, "case": "c", "resolution": {"dt": 0.1}, "trajectory":
           {"samples": {"t": [0, 0.1], "theta": [0, 1]}}})",
        "missing the required array \"theta_dot\""},
+      {rod_trajectory(R"("t": [0, 0, 0.2, 0.2, 0.1, 0.1], "s": [0, 1, 0, 1, 0, 1], "position_x": [0, 1, 0, 1, 0, 1],
+                         "position_y": [0, 0, 0, 0, 0, 0], "position_z": [0, 0, 0, 0, 0, 0])"),
+       "row 4: t = 0.1 follows the snapshot at t = 0.2"},
+      {rod_trajectory(R"("t": [0, 0, 0.1, 0.1, 0.2], "s": [0, 1, 0, 1, 0], "position_x": [0, 1, 0, 1, 0],
+                         "position_y": [0, 0, 0, 0, 0], "position_z": [0, 0, 0, 0, 0])"),
+       "rows 4 .. 4: the snapshot at t = 0.2 has 1 vertex; at least 2 are needed"},
+      {rod_trajectory(R"("t": [0, 0, 0, 0.1, 0.1], "s": [0, 1, 0.5, 0, 1], "position_x": [0, 1, 0, 1, 0],
+                         "position_y": [0, 0, 0, 0, 0], "position_z": [0, 0, 0, 0, 0])"),
+       "row 2: s = 0.5 follows s = 1 in the snapshot at t = 0"},
+      {rod_trajectory(R"("t": [0, 0, 0.1, 0.1], "s": [0, 1, 0.2, 1], "position_x": [0, 1, 0, 1],
+                         "position_y": [0, 0, 0, 0], "position_z": [0, 0, 0, 0])"),
+       "row 2: s = 0.2: the arclength of the snapshot at t = 0.1 must start at 0"},
+      {rod_trajectory(R"("t": [0, 0], "s": [0, 1])"), "missing the required arrays position_x, position_y, position_z"},
+      {rod_trajectory(R"("t": [0, 0], "s": [0, 1], "position_x": [0, 1], "position_y": [0, 0], "position_z": [0, 0],
+                         "n0_x": [1, 1])"),
+       "unknown field \"n0_x\""},
   };
   for (const auto& c : cases) {
     try {

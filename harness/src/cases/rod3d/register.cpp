@@ -17,6 +17,7 @@ void register_rod3d_cases(Registry& registry) {
   rod3d_cases::add_roll_up(registry);
   rod3d_cases::add_modes(registry);
   rod3d_cases::add_energy_in_time(registry);
+  rod3d_cases::add_skew_vibration(registry);
   rod3d_cases::add_helical_buckling(registry);
   rod3d_cases::add_bathe_bolourchi(registry);
   rod3d_cases::add_lateral_torsional(registry);

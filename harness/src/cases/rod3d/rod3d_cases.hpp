@@ -14,6 +14,7 @@ void add_heavy_cantilever(Registry& registry);    // cantilever under its own we
 void add_roll_up(Registry& registry);             // end-moment roll-up in a tilted 3-D frame
 void add_modes(Registry& registry);               // bending and torsional frequencies of a cantilever
 void add_energy_in_time(Registry& registry);      // energy of implicit Euler and midpoint on a swinging rod
+void add_skew_vibration(Registry& registry);      // first-mode release skew to the principal planes vs Euler-Bernoulli
 void add_helical_buckling(Registry& registry);    // localized helical buckling (PyElastica's case)
 void add_bathe_bolourchi(Registry& registry);     // 45-degree bend, out-of-plane tip load
 void add_lateral_torsional(Registry& registry);   // lateral-torsional buckling of a cantilever

@@ -71,6 +71,17 @@ double cantilever_beta_l(std::size_t n);
 // omega_n = (beta_n L)^2 sqrt(EI / (rho S L^4)). Requires EI, rho S, L > 0, n >= 1.
 double cantilever_frequency(std::size_t n, double EI, double line_density, double L);
 
+// The n-th clamped-free mode shape at x = s / L in [0, 1], scaled to 1 at the tip, and its slope
+// d/dx: phi(x) = cosh bx - cos bx - sigma (sinh bx - sin bx), sigma = (cosh b + cos b) /
+// (sinh b + sin b), b = beta_n L, evaluated as sinh(b (1 - x)) + cosh bx sin b - sinh bx cos b over
+// sinh b + sin b for the hyperbolic part, which cancels no digits (the textbook form loses ~b / ln 10
+// digits). Requires 1 <= n <= 50 (cosh b finite with room) and x in [0, 1].
+struct ModeShapePoint {
+  double value = 0.0;  // phi(x) / phi(1)
+  double slope = 0.0;  // phi'(x) / phi(1), per unit x
+};
+ModeShapePoint cantilever_mode_shape(std::size_t n, double x);
+
 // ---- 4. end-moment roll-up -------------------------------------------------------------------
 struct EndMomentRollUp {
   double L = 1.0;   // > 0

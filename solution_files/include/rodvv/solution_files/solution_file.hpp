@@ -10,7 +10,7 @@
 //     "resolution": {"N": 40},                  the case's resolution parameter and its value
 //     "solver": "PyElastica 1.0.0, ...",        free text, shown in the report
 //     "cpu_seconds": 37.8, "wall_seconds": 37.8 optional: the solver's cost, for work-precision plots
-//     "planar_rod": {...}  or  "trajectory": {...}
+//     "planar_rod": {...}, "spatial_rod": {...}, "trajectory": {...} or "rod_trajectory": {...}
 //   }
 //
 // Units are the case's parameter units (rodvv list -v); angles in radians.
@@ -29,6 +29,11 @@
 //
 // trajectory: "t", "theta", "theta_dot" inline under "samples" or in "samples_csv"; t strictly
 // increasing; optional "steps" and "rhs_evaluations".
+//
+// rod_trajectory (a 3-D rod in time, RodTrajectory of rod_trajectory.hpp): one row per vertex and
+// snapshot in "t", "s", "position_x", "position_y", "position_z", inline under "samples" or in
+// "samples_csv"; a snapshot's rows together (equal t, s strictly increasing from 0), the snapshots in
+// strictly increasing t; optional "steps".
 //
 // Every malformed file is an InputError naming the file, the JSON path (or CSV line and column) and
 // what was expected; nothing in a file can crash the reader or make it allocate beyond the file's
