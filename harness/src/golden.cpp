@@ -73,7 +73,9 @@ std::vector<GoldenChange> compare_goldens(const GoldenCase& golden, const Golden
       }
       const GoldenSample& s = it->second;
       const double m = magnitude(sample);
-      const double value_tolerance = tolerance.value_relative * m;
+      const auto absolute = tolerance.absolute.find(name);
+      const double value_tolerance =
+          tolerance.value_relative * m + (absolute == tolerance.absolute.end() ? 0.0 : absolute->second);
       double d = deviation(sample.computed, s.computed, value_tolerance);
       if (sample.error || s.error) {
         const double error_tolerance =
@@ -99,7 +101,9 @@ std::optional<GateResult> regression_gate(const Case& c, const SweepResult& resu
   if (found == goldens.end()) return skip("no golden values for this case (rodvv bless writes them)");
   // Unit scales too: the goldens hold numbers in the case's units.
   if (!at_default_parameters(c.info, result.info.parameters, false)) return skip("goldens hold the default parameters");
-  const auto changes = compare_goldens(found->second, golden_of(result), tolerance);
+  GoldenTolerance with_round_off = tolerance;
+  with_round_off.absolute.insert(c.golden_absolute.begin(), c.golden_absolute.end());
+  const auto changes = compare_goldens(found->second, golden_of(result), with_round_off);
   std::size_t levels = 0;
   for (const auto& level : result.levels) levels += find_level(found->second, level.level) ? 1 : 0;
   if (levels == 0) return skip("no level in common with the goldens");

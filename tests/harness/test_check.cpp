@@ -128,11 +128,16 @@ TEST(Check, SpatialRodSolutionsThroughFilesReproduceTheSweepExactly) {
     const SweepResult sweep = run_sweep(c, c.info.parameters, levels);
     const SweepResult checked = check_solutions(c, c.info.parameters, solutions_of(c, c.info.parameters, levels), {});
     for (std::size_t i = 0; i < levels.size(); ++i)
-      for (const auto& [metric, sample] : sweep.levels[i].metrics)
-        if (metric != "newton_iterations")
+      for (const auto& [metric, sample] : sweep.levels[i].metrics) {
+        if (metric != "newton_iterations") {
           EXPECT_EQ(checked.levels[i].metrics.at(metric).computed, sample.computed) << name << " " << metric;
-    for (const auto& gate : checked.gates)
-      if (gate.kind == GateKind::Order) EXPECT_TRUE(gate.passed) << name << " " << gate.name << ": " << gate.reason;
+        }
+      }
+    for (const auto& gate : checked.gates) {
+      if (gate.kind == GateKind::Order) {
+        EXPECT_TRUE(gate.passed) << name << " " << gate.name << ": " << gate.reason;
+      }
+    }
   }
   // The helix's H spread falls at fourth order on rodvv's rod at its defaults, a superconvergence
   // measured, not derived: not asked of another solver.

@@ -70,6 +70,29 @@ TEST(Golden, AChangedErrorConstantFailsAndRoundOffPasses) {
   EXPECT_LT(*gate.measured, 1e-3);
 }
 
+// A metric at round-off (Case::golden_absolute) is held to its stated absolute tolerance, the others as before.
+TEST(Golden, AMetricAtRoundOffIsHeldToItsAbsoluteTolerance) {
+  Fixture f;
+  const std::string metric = f.result.levels.front().metrics.begin()->first;
+  f.c.golden_absolute[metric] = 0.5;
+  for (const auto& [shift, passes] : {std::pair{0.3, true}, std::pair{0.7, false}}) {
+    SweepResult moved = f.result;
+    for (auto& level : moved.levels) {
+      auto& sample = level.metrics.at(metric);
+      sample.computed += shift;
+      if (sample.error) *sample.error += shift;
+    }
+    const GateResult gate = gate_of(f, moved);
+    EXPECT_EQ(gate.passed, passes) << shift << ": " << gate.reason;
+  }
+  // The tolerance is the metric's own: the same shift of another metric fails.
+  SweepResult other = f.result;
+  for (auto& level : other.levels)
+    for (auto& [name, sample] : level.metrics)
+      if (name != metric) sample.computed += 0.3;
+  EXPECT_FALSE(gate_of(f, other).passed);
+}
+
 TEST(Golden, FailureStateAndMissingMetricsAreChanges) {
   const Fixture f;
   SweepResult failed = f.result;

@@ -25,6 +25,10 @@ const std::vector<std::string> kSeeds = {
         "planar_rod": {"nodes": {"s": [0, 0.5, 1], "x": [0, 0.5, 1], "y": [0, 0, 0]}}})",
     R"({"format": "rodvv-solution", "version": 1, "case": "p", "resolution": {"omega_dt": 0.1},
         "trajectory": {"steps": 2, "samples": {"t": [0, 0.1, 0.2], "theta": [1, 0.9, 0.7], "theta_dot": [0, -1, -2]}}})",
+    R"({"format": "rodvv-solution", "version": 1, "case": "rod3d/skew-vibration", "resolution": {"N": 2},
+        "rod_trajectory": {"steps": 4, "samples": {"t": [0, 0, 0, 0.1, 0.1, 0.1, 0.2, 0.2, 0.2],
+          "s": [0, 0.5, 1, 0, 0.5, 1, 0, 0.5, 1], "position_x": [0, 0.5, 1, 0, 0.5, 1, 0, 0.5, 1],
+          "position_y": [0, 0.01, 0.03, 0, 0, 0, 0, -0.01, -0.03], "position_z": [0, 0, 0.01, 0, 0, 0, 0, 0, -0.01]}}})",
 };
 
 const std::vector<std::string> kTokens = {"null", "true", "-", "1e999", "-0", "[]", "{}", "\"", ",", ":", "[",

@@ -46,6 +46,15 @@ std::vector<MetricSpec> lateral_torsional_metrics() {
                             "d(P_cr / P_classical) / d(EI_weak/EI_strong) (the prebuckling correction)")};
 }
 
+void hold_lateral_torsional_round_off(Case& c) {
+  // The crossing's round-off: the Hessian spans EI_strong = EI_weak / r0 (1e3 x) and N^4, and the extrapolation
+  // 3 P(r0) - 3 P(2 r0) + P(3 r0) multiplies it by ~7; two CPUs (their libm's FMA paths) gave P_cr / P_classical
+  // 1.0001233837 and 1.0001235609 at N = 64 on the nodal rod (1.8e-7 apart). The goldens hold P_cr to 1e-6 of
+  // P_classical (1.1763 at the defaults, the only parameters goldens hold), 5x that.
+  c.golden_absolute["critical_load"] = 1.2e-6;
+  c.golden_absolute["critical_load_relative"] = 1e-6;
+}
+
 LevelOutput lateral_torsional_level(const Parameters& p, std::size_t elements, const CantileverStability& stability) {
   const double exact = references::lateral_torsional_cantilever_critical_load(
       {parameter_value(p, "EI_weak"), parameter_value(p, "GJ"), parameter_value(p, "L")});

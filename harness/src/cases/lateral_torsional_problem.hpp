@@ -22,6 +22,8 @@ Parameters lateral_torsional_parameters(const char* weak_axis);
 void require_small_prebuckling_rotation(Case& c);
 
 std::vector<MetricSpec> lateral_torsional_metrics();
+// The regression tolerances of the critical load, which sits at a round-off floor (Case::golden_absolute).
+void hold_lateral_torsional_round_off(Case& c);
 
 // stability(elements, ratio, load): the rod's stability eigenvalue at the loaded equilibrium with
 // EI_strong = EI_weak / ratio. Metrics critical_load, critical_load_relative, prebuckling_slope.

@@ -41,6 +41,11 @@ struct Case {
   CaseInfo info;  // info.parameters holds the defaults
   std::vector<GateSpec> gates;
   std::size_t fit_levels = 3;  // least-squares order over the last fit_levels levels (>= 3)
+  // For metrics at round-off (in units of eps, or at a floor set by the problem's conditioning): the
+  // regression gate's absolute tolerance on value and error (golden.hpp), derived where it is set. Their
+  // bits follow the CPU: glibc's libm picks its FMA code paths at run time, and the last bits of sin,
+  // exp, pow move the round-off such a metric measures.
+  std::map<std::string, double> golden_absolute;
   ParameterCheck check_parameters;
   LevelRunner run_level;
   // Set together by split_level, in the cases that can check solution files.

@@ -13,6 +13,8 @@
 //   error:  |e - e_golden| <= error_relative |e_golden| + value_relative m
 //           (1e-6: a change of the error constant by 1e-5 is seen; the second term is the
 //           round-off of an error far below the value it is the error of)
+//   plus, for a metric at round-off, the absolute tolerance its case states (Case::golden_absolute):
+//   round-off is not the same bits on every CPU (case.hpp).
 // The gate's measured value is the largest deviation over its tolerance (<= 1 passes).
 #include <map>
 #include <optional>
@@ -46,6 +48,8 @@ using Goldens = std::map<std::string, GoldenCase>;  // by case name
 struct GoldenTolerance {
   double value_relative = 1e-9;
   double error_relative = 1e-6;
+  // Per metric, an absolute tolerance added to both (Case::golden_absolute: metrics at round-off).
+  std::map<std::string, double> absolute;
 };
 
 // The goldens of a finished sweep (diagnostic metrics left out).

@@ -211,6 +211,7 @@ void add_bundle(Registry& registry) {
                                 " must be <= 2.35 (from at most 30 degrees below the top, the strands must end 15 degrees "
                                 "above the bottom, where the meridians meet again)");
   });
+  hold_round_trip_round_off(c);
   registry.add(std::move(c));
 }
 

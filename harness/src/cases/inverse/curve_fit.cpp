@@ -98,6 +98,7 @@ void add_curve_fit(Registry& registry) {
        make_parameter("rhoS", 0.05, 0.0, 1e12, true, false, "mass / length", "line density"),
        make_parameter("g", 9.81, 0.0, 1e12, true, false, "length / time^2", "gravity")},
       element_levels("number of elements", {4, 8, 16}, {4, 8, 16, 32}), std::move(metrics), std::move(gates), run);
+  hold_round_trip_round_off(c);
   registry.add(std::move(c));
 }
 

@@ -62,4 +62,11 @@ void add_round_trip_specs(std::vector<MetricSpec>& metrics, std::vector<GateSpec
                                    "a subtraction, a division, a product per entry"));
 }
 
+void hold_round_trip_round_off(Case& c) {
+  // Both in units of round-off, whose bits follow the CPU (case.hpp, golden_absolute): curve-fit's round trip at
+  // N = 16 was 0.62 on one CPU and 0.26 on another. The goldens hold them to 4 units, far below the gates (64, 16).
+  c.golden_absolute["round_trip_error"] = 4.0;
+  c.golden_absolute["equilibrium_residual"] = 4.0;
+}
+
 }  // namespace rodvv::harness::inverse_cases

@@ -31,5 +31,7 @@ void add_round_trip_metrics(LevelOutput& out, const solvers::superhelix::RodMode
 // sums in F and the LU of J; a subtraction, a division and a product per entry), shared by every
 // inverse case.
 void add_round_trip_specs(std::vector<MetricSpec>& metrics, std::vector<GateSpec>& gates);
+// The regression tolerances of the round-trip metrics, which measure round-off (Case::golden_absolute).
+void hold_round_trip_round_off(Case& c);
 
 }  // namespace rodvv::harness::inverse_cases

@@ -160,6 +160,7 @@ void add_friction_cone(Registry& registry) {
        integer_parameter("N", 8.0, 4.0, 32.0, "elements")},
       Resolution{"gamma", "SOCQP regularisation", ResolutionScale::StepSize, {1e-2, 1e-3, 1e-4}, {1e-1, 1e-2, 1e-3, 1e-4}},
       std::move(metrics), std::move(gates), run);
+  hold_round_trip_round_off(c);
   registry.add(std::move(c));
 }
 

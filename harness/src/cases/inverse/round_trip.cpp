@@ -181,6 +181,7 @@ void add(Registry& registry, bool planar, double measured_rest_error) {
                                                            format_value(w) + " must be >= 1e-4, where the weight's share "
                                                            "of the rest strain stands above round-off");
                  });
+  hold_round_trip_round_off(c);
   registry.add(std::move(c));
 }
 

@@ -161,6 +161,7 @@ void add_round_trip_sphere(Registry& registry) {
        make_parameter("gamma", 1e-3, 1e-3, 1.0, false, false, "", "SOCQP regularisation, relative to the mean diagonal of H K^-2 H^T")},
       element_levels("number of elements", {8, 16, 32}, {8, 16, 32, 64}), std::move(metrics), std::move(gates), run);
   require_hair_on_head_windows(c);
+  hold_round_trip_round_off(c);
   registry.add(std::move(c));
 }
 

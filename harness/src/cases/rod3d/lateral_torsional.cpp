@@ -67,6 +67,7 @@ void add_lateral_torsional(Registry& registry) {
   // 6e11 fail: not monotone, so the window stops at 1e3).
   require_small_prebuckling_rotation(c);
   require(c, ratio_window("EI_weak", "GJ", 0.3, 1e3, "the bending-to-torsion ratios the levels resolve P_cr at"));
+  hold_lateral_torsional_round_off(c);
   registry.add(std::move(c));
 }
 

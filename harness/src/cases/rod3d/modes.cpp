@@ -199,6 +199,9 @@ void add_modes(Registry& registry) {
   require_window(c, fmt::format("eps (omega_max / omega_min)^2 <= {:g} at N = {:g} (EI1, EI2, GJ, rhoS, rhoI0 and L on "
                                 "comparable scales)", kMaxEigenRoundOff, kFinestDefaultEdges),
                  check_frequency_spread);
+  // torsion_discrete is round-off, whose bits follow the CPU (case.hpp, golden_absolute): 0.069 at N = 64 on one CPU,
+  // 0.0062 on another. The goldens hold it to 0.25 (2 x the largest measured, 0.108), below the gate's 1.
+  c.golden_absolute["torsion_discrete"] = 0.25;
   registry.add(std::move(c));
 }
 

@@ -63,6 +63,7 @@ void add_lateral_torsional(Registry& registry) {
   // 1e-12) the stiffness contrast EI_strong / GJ ~ 1e15 leaves the stability check's equilibrium residual above
   // its 1e-8 (scaled) and every level fails; 2.8e11 passes. Small ratios pass (GJ 160 x, EI_weak 1/100 x).
   require(c, ratio_window("EI_weak", "GJ", 0.0, 2.5e11, "the bending-to-torsion ratios the statics resolve to 1e-8"));
+  hold_lateral_torsional_round_off(c);
   registry.add(std::move(c));
 }
 
