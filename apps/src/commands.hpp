@@ -59,6 +59,14 @@ int run_command(const RunOptions& options);
 int sweep_command(const SweepOptions& options);
 int report_command(const ReportOptions& options);
 int check_command(const CheckOptions& options);
+
+struct ProblemOptions {
+  std::string case_name;                 // exact
+  std::vector<std::string> assignments;  // --set NAME=VALUE
+  std::size_t intervals = 100;           // --stations: uniform intervals, intervals + 1 stations
+  std::string out;                       // the JSON file written
+};
+int problem_command(const ProblemOptions& options);
 int bless_command(const CommonOptions& options);
 
 // Shared by the commands: exit code of finished results (no evidence is not a pass), and the

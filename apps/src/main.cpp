@@ -109,6 +109,16 @@ int main(int argc, char** argv) {
                      "merge the JSON files in this directory (from `rodvv run --json`) instead of running");
   report->add_flag("!--no-plots", report_options.plots, "skip the matplotlib plots");
 
+  ProblemOptions problem_options;
+  auto* problem = app.add_subcommand("problem", "write the data that poses a case's problem to another solver (the "
+                                                "manufactured loads, the clamp, the tip loads, the exact solution) as "
+                                                "JSON at uniform stations");
+  problem->add_option("case", problem_options.case_name, "exact case name")->required();
+  problem->add_option("--set", problem_options.assignments,
+                      "override a case parameter, NAME=VALUE (validated against its range); repeatable");
+  problem->add_option("--stations", problem_options.intervals, "uniform intervals along the rod (default 100)");
+  problem->add_option("--out", problem_options.out, "the JSON file to write")->required();
+
   CommonOptions bless_options;
   auto* bless = app.add_subcommand("bless", "run cases at their default levels and parameters and write their metrics "
                                             "as the goldens of the regression gates, printing what moved");
@@ -121,8 +131,10 @@ int main(int argc, char** argv) {
   // An unknown first word is named (CLI11 would only say that a subcommand is required).
   if (argc >= 2 && argv[1][0] != '-') {
     const std::string word = argv[1];
-    if (word != "list" && word != "run" && word != "sweep" && word != "report" && word != "check" && word != "bless") {
-      fmt::print(stderr, "rodvv: error: unknown command '{}': expected list, run, sweep, report, check or bless (rodvv --help)\n",
+    if (word != "list" && word != "run" && word != "sweep" && word != "report" && word != "check" && word != "bless" &&
+        word != "problem") {
+      fmt::print(stderr, "rodvv: error: unknown command '{}': expected list, run, sweep, report, check, problem or bless "
+                         "(rodvv --help)\n",
                  word);
       return kBadInput;
     }
@@ -140,6 +152,7 @@ int main(int argc, char** argv) {
     if (*sweep) return sweep_command(sweep_options);
     if (*report) return report_command(report_options);
     if (*check) return check_command(check_options);
+    if (*problem) return problem_command(problem_options);
     if (*bless) return bless_command(bless_options);
   } catch (const rodvv::InputError& error) {
     fmt::print(stderr, "rodvv: error: {}\n", error.what());

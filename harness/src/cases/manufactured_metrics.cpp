@@ -65,4 +65,55 @@ std::vector<GateSpec> manufactured_gates(const std::vector<std::pair<std::string
   return gates;
 }
 
+ProblemData manufactured_problem_data(const references::ManufacturedRod& rod, const std::vector<double>& s) {
+  ProblemData data;
+  data.description =
+      "A Kirchhoff rod (inextensible, unshearable) of length `length`, clamped at s = 0 at root_position_* with the "
+      "frame root_n0_* .. root_n2_* (its directors in world components; n0 the tangent), stiffness_0..2 = (GJ, EI1, "
+      "EI2) about (n0, n1, n2), natural strain natural_strain_0..2 (material components). Loads: the force density "
+      "force_density_* and couple density couple_density_* per unit length along s (world components; the couple is "
+      "0 where couple_free = 1), and at s = L the dead force tip_force_* and moment tip_moment_*. The integral of the "
+      "force density over [a, b] is exactly force(a) - force(b) (force_* the internal force, the action of (s, L] on "
+      "[0, s]). The other columns are the exact solution: position_*, frame n0_* .. n2_*, strain_u_0..2 (twist, "
+      "kappa1, kappa2), force_*, moment_*.";
+  const auto put = [&](const std::string& name, const Vec3& v, const char* axes) {
+    for (int a = 0; a < 3; ++a) data.values.emplace_back(name + "_" + axes[a], v[a]);
+  };
+  const auto stations = references::manufactured_stations(rod, s);
+  const auto tip = references::manufactured_stations(rod, {rod.length}).front();
+  data.values.emplace_back("length", rod.length);
+  data.values.emplace_back("couple_free", rod.couple_free ? 1.0 : 0.0);
+  put("stiffness", rod.stiffness, "012");
+  put("natural_strain", rod.natural_strain, "012");
+  put("root_position", rod.root_position, "xyz");
+  for (int d = 0; d < 3; ++d) put("root_n" + std::to_string(d), rod.root_frame.col(d), "xyz");
+  put("tip_force", tip.force, "xyz");
+  put("tip_moment", tip.moment, "xyz");
+  data.columns = {"s"};
+  const auto add_columns = [&](const std::string& name, const char* axes) {
+    for (int a = 0; a < 3; ++a) data.columns.push_back(name + "_" + axes[a]);
+  };
+  add_columns("force_density", "xyz");
+  add_columns("couple_density", "xyz");
+  add_columns("position", "xyz");
+  for (int d = 0; d < 3; ++d) add_columns("n" + std::to_string(d), "xyz");
+  add_columns("strain_u", "012");
+  add_columns("force", "xyz");
+  add_columns("moment", "xyz");
+  for (const auto& station : stations) {
+    std::vector<double> row{station.s};
+    const auto append = [&](const Vec3& v) { row.insert(row.end(), {v[0], v[1], v[2]}); };
+    append(station.force_density);
+    // A couple-free rod's c = -m' - t x n is zero by construction; the stations carry its round-off (~1e-15).
+    append(rod.couple_free ? Vec3::Zero() : station.couple_density);
+    append(station.position);
+    for (int d = 0; d < 3; ++d) append(station.frame.col(d));
+    append(station.strain);
+    append(station.force);
+    append(station.moment);
+    data.rows.push_back(std::move(row));
+  }
+  return data;
+}
+
 }  // namespace rodvv::harness::cases

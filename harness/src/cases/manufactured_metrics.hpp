@@ -18,6 +18,11 @@ LevelOutput measure_manufactured(const SpatialRodSolution& solution, const refer
 
 std::vector<MetricSpec> manufactured_metric_specs();
 
+// What another solver needs to pose the manufactured problem (`rodvv problem`): the clamp, the stiffness and
+// natural strain, the tip loads n(L), m(L), the force and couple densities at the stations s, and the exact
+// solution there.
+ProblemData manufactured_problem_data(const references::ManufacturedRod& rod, const std::vector<double>& s);
+
 // An order gate and a bound C h^2 (C = 2 x the value measured at the finest default level) per metric.
 std::vector<GateSpec> manufactured_gates(const std::vector<std::pair<std::string, double>>& measured_at_finest,
                                          double h_finest, const std::string& why_second_order);

@@ -11,6 +11,7 @@
 #include "rodvv/harness/case_info.hpp"
 #include "rodvv/harness/gate.hpp"
 #include "rodvv/harness/parameters.hpp"
+#include "rodvv/harness/problem_data.hpp"
 #include "rodvv/harness/sweep_result.hpp"
 
 namespace rodvv::harness {
@@ -52,6 +53,9 @@ struct Case {
   SolveLevel solve;
   MeasureSolution measure;
   bool checks_solutions() const { return bool(solve) && bool(measure); }
+  // The data another solver needs to pose the problem (manufactured loads; `rodvv problem`); empty when
+  // the case's parameters and text pose it.
+  ProblemDataAt problem_data;
 };
 
 // The alternative of a Solution that a case measures; InputError naming both kinds otherwise.

@@ -114,6 +114,32 @@ LevelOutput measure(const Parameters& p, double, const Solution& any) {
   return output;
 }
 
+// What another solver needs to pose the problem (`rodvv problem`): the clamp, the potential's coefficients, the
+// tip loads, EI(s) and the natural curvature at uniform stations, and the exact solution there.
+ProblemData problem_data(const Parameters& p, std::size_t intervals) {
+  const ref::ManufacturedPlanarRod rod = manufactured_rod(p);
+  const std::vector<double> s = uniform_stations(rod.length, intervals);
+  ProblemData data;
+  data.description =
+      "A planar inextensible, unshearable rod of length `length`, clamped at s = 0 at (root_x, root_y) with tangent "
+      "angle theta_root; bending stiffness bending_stiffness(s) and natural curvature natural_curvature(s) per "
+      "station; loaded by the potential V(x, y) = 1/2 field_xx x^2 + field_xy x y + field_y y per unit length "
+      "(force density -grad V) and at s = L by the dead force (tip_force_x, tip_force_y) and moment tip_moment. The "
+      "other columns are the exact solution: x, y, theta, kappa, force_x, force_y (the internal force, the action of "
+      "(s, L] on [0, s]) and moment.";
+  data.values = {{"length", rod.length},           {"root_x", rod.root_x},
+                 {"root_y", rod.root_y},           {"theta_root", rod.theta_root},
+                 {"field_xx", rod.field_xx},       {"field_xy", rod.field_xy},
+                 {"field_y", rod.field_y},         {"tip_force_x", rod.tip_force_x},
+                 {"tip_force_y", rod.tip_force_y}, {"tip_moment", rod.tip_moment}};
+  data.columns = {"s", "bending_stiffness", "natural_curvature", "x", "y", "theta", "kappa", "force_x", "force_y",
+                  "moment"};
+  for (const auto& q : ref::manufactured_planar_stations(rod, s))
+    data.rows.push_back({q.s, q.bending_stiffness, q.natural_curvature, q.x, q.y, q.theta, q.kappa, q.force_x,
+                         q.force_y, q.moment});
+  return data;
+}
+
 }  // namespace
 
 void add_manufactured(Registry& registry) {
@@ -154,6 +180,7 @@ void add_manufactured(Registry& registry) {
     }
     split_level(
         c, [scheme](const Parameters& p, double level) { return solve(scheme, p, level); }, measure);
+    c.problem_data = problem_data;
     registry.add(std::move(c));
   }
 }

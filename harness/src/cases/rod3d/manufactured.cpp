@@ -114,6 +114,10 @@ void add_manufactured(Registry& registry) {
       element_levels("number of edges", {16, 32, 64, 128}, {16, 32, 64, 128, 256}), std::move(metrics),
       std::move(gates), nullptr);
   split_level(c, solve, measure);
+  c.problem_data = [](const Parameters& p, std::size_t intervals) {
+    const ref::ManufacturedRod rod = manufactured_rod(p);
+    return manufactured_problem_data(rod, uniform_stations(rod.length, intervals));
+  };
   registry.add(std::move(c));
 }
 

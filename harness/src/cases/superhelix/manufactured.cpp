@@ -128,6 +128,10 @@ void add_manufactured(Registry& registry) {
       element_levels("number of elements", {8, 16, 32, 64}, {8, 16, 32, 64, 128}), manufactured_metric_specs(),
       std::move(gates), nullptr);
   split_level(c, solve, measure);
+  c.problem_data = [](const Parameters& p, std::size_t intervals) {
+    const ref::ManufacturedRod rod = manufactured_rod(p);
+    return manufactured_problem_data(rod, uniform_stations(rod.length, intervals));
+  };
 
   // The super-clothoid (strains affine per element, nodal strains) on the same problem, the same Gauss-point
   // loads of its own quadrature; stations at the element midpoints (where n(s) from the lumped point forces is
@@ -160,6 +164,7 @@ void add_manufactured(Registry& registry) {
   for (auto& metric : clothoid.info.metrics)
     if (metric.name == "position" || metric.name == "frame") metric.theoretical_order = 4.0;
   split_level(clothoid, solve_clothoid, measure);
+  clothoid.problem_data = c.problem_data;
   registry.add(std::move(c));
   registry.add(std::move(clothoid));
 }
