@@ -66,15 +66,7 @@ std::vector<SweepResult> run_cases(const std::vector<const Case*>& cases, const 
   const std::optional<harness::Goldens> goldens = regression_gates ? load_goldens(common) : std::nullopt;
   std::vector<harness::SweepJob> jobs;
   for (const Case* c : cases) {
-    harness::Parameters p = c->info.parameters;
-    for (const auto& assignment : common.assignments) {
-      try {
-        harness::apply_assignment(p, assignment);
-      } catch (const InputError& error) {
-        throw InputError(error.parameter(), fmt::format("case '{}': {}", c->info.name, error.what()));
-      }
-    }
-    if (c->check_parameters) c->check_parameters(p);
+    harness::Parameters p = case_parameters(*c, common.assignments);
     const auto levels = levels_override ? std::span<const double>(*levels_override)
                                         : harness::sweep_levels(*c, common.extended);
     harness::validate_levels(*c, levels);
@@ -117,6 +109,19 @@ void write_outputs(const reports::ValidationReport& report, const std::optional<
 }
 
 }  // namespace
+
+harness::Parameters case_parameters(const harness::Case& c, const std::vector<std::string>& assignments) {
+  harness::Parameters p = c.info.parameters;
+  for (const auto& assignment : assignments) {
+    try {
+      harness::apply_assignment(p, assignment);
+    } catch (const InputError& error) {
+      throw InputError(error.parameter(), fmt::format("case '{}': {}", c.info.name, error.what()));
+    }
+  }
+  if (c.check_parameters) c.check_parameters(p);
+  return p;
+}
 
 // A case in which no gate was evaluated (all of them skipped, e.g. measured bounds at user
 // parameters) has shown nothing: it is not a pass. Said on stderr, exit 1.

@@ -67,6 +67,10 @@ struct ProblemOptions {
   std::string out;                       // the JSON file written
 };
 int problem_command(const ProblemOptions& options);
+
+// A case's parameters: its defaults with the --set assignments applied (InputError naming the case and the
+// parameter), then its windows checked.
+harness::Parameters case_parameters(const harness::Case& c, const std::vector<std::string>& assignments);
 int bless_command(const CommonOptions& options);
 
 // Shared by the commands: exit code of finished results (no evidence is not a pass), and the

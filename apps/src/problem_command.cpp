@@ -39,9 +39,7 @@ int problem_command(const ProblemOptions& options) {
   if (!(options.intervals >= 1 && options.intervals <= kMaxIntervals))
     throw InputError("--stations", fmt::format("invalid --stations {}: the number of intervals must be in [1, {}]",
                                                options.intervals, kMaxIntervals));
-  harness::Parameters parameters = c->info.parameters;
-  for (const auto& assignment : options.assignments) harness::apply_assignment(parameters, assignment);
-  if (c->check_parameters) c->check_parameters(parameters);
+  const harness::Parameters parameters = case_parameters(*c, options.assignments);
 
   const harness::ProblemData data = c->problem_data(parameters, options.intervals);
   nlohmann::ordered_json document;
