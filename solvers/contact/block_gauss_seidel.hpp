@@ -11,6 +11,9 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <vector>
+
+#include <Eigen/LU>
 
 #include "rodvv/common/eigen_types.hpp"
 #include "rodvv/common/errors.hpp"
@@ -53,14 +56,20 @@ ConeSolution block_gauss_seidel(Operator& W, const VecX& b, const VecX& mu, Cone
   // tolerance, at most a quarter of the sweeps so far ahead (a rate seen on a plateau may be too slow
   // by any factor; the cap bounds the sweeps done beyond convergence to a quarter). Near the tolerance
   // it is evaluated every sweep, and at the last one; the stopping test is the full residual's.
+  // Each contact's block and its inverse, once (the local stick solve needs W_kk^-1 every sweep).
+  std::vector<Mat3> blocks(static_cast<std::size_t>(n)), inverses(static_cast<std::size_t>(n));
+  for (Eigen::Index k = 0; k < n; ++k) {
+    blocks[std::size_t(k)] = W.block(k);
+    inverses[std::size_t(k)] = blocks[std::size_t(k)].inverse();
+  }
   std::size_t next_check = 1, last_check = 0;
   double last_residual = 0.0;
   for (std::size_t sweep = 1; sweep <= settings.max_sweeps; ++sweep) {
     for (Eigen::Index k = 0; k < n; ++k) {
-      const Mat3 block = W.block(k);
+      const Mat3& block = blocks[std::size_t(k)];
       const Vec3 previous = solution.r.segment<3>(3 * k);
       const Vec3 local_b = b.segment<3>(3 * k) + W.product(k, solution.r) - block * previous;
-      const Vec3 next = solve_local_cone_problem(block, local_b, mu[k], law, &previous);
+      const Vec3 next = solve_local_cone_problem(block, inverses[std::size_t(k)], local_b, mu[k], law, &previous);
       solution.r.segment<3>(3 * k) = next;
       W.changed(k, next - previous);
     }

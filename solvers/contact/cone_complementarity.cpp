@@ -23,6 +23,7 @@ namespace {
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr int kPhiIntervals = 256;
 constexpr double kWarmBracket = 0.05;  // radians
+constexpr int kNewtonSteps = 8;
 
 // sqrt, not hypot: the Gauss-Seidel's innermost call (hypot was 12 % of a bundle's solve); forces and
 // velocities of contact problems are far from the squares' overflow.
@@ -44,41 +45,69 @@ struct Boundary {
 
 Boundary boundary_solution(const Mat3& W, const Vec3& b, double mu, ConeLaw law, const Vec3* guess) {
   const double gamma = law == ConeLaw::Coulomb ? 0.0 : -mu;
-  const auto vectors = [&](double phi, Vec3& a, Vec3& g) {
-    const double c = std::cos(phi), s = std::sin(phi);
-    a = W * Vec3(1.0, mu * c, mu * s);
-    g = Vec3(gamma, c, s);
-  };
-  const auto consistency = [&](double phi) {
-    Vec3 a, g;
-    vectors(phi, a, g);
-    return a.dot(g.cross(b));
-  };
+  // The sliding direction as a unit vector (c, s) = (cos phi, sin phi): the warm start below moves it
+  // without trigonometric calls.
+  const auto consistency_at = [&](double c, double s) { return (W * Vec3(1.0, mu * c, mu * s)).dot(Vec3(gamma, c, s).cross(b)); };
+  const auto consistency = [&](double phi) { return consistency_at(std::cos(phi), std::sin(phi)); };
   Boundary best;
-  const auto consider = [&](double phi) {
-    Vec3 a, g;
-    vectors(phi, a, g);
+  const auto consider_at = [&](double c, double s) {
+    const Vec3 a = W * Vec3(1.0, mu * c, mu * s), g(gamma, c, s);
     const Vec3 ag = a.cross(g);
     const double norm2 = ag.squaredNorm();
     if (!(norm2 > 0.0)) return;
-    const double rN = -b.cross(g).dot(ag) / norm2;
-    const double t = b.cross(a).dot(ag) / norm2;  // from t (g x a) = -(b x a), g x a = -(a x g)
+    const double inverse_norm2 = 1.0 / norm2;
+    const double rN = -b.cross(g).dot(ag) * inverse_norm2;
+    const double t = b.cross(a).dot(ag) * inverse_norm2;  // from t (g x a) = -(b x a), g x a = -(a x g)
     // t >= 0 up to the rounding of b (t has the units of u)
     if (!(rN > 0.0) || t < -64.0 * kEps * b.norm()) return;
-    const Vec3 r(rN, mu * rN * std::cos(phi), mu * rN * std::sin(phi));
+    const Vec3 r(rN, mu * rN * c, mu * rN * s);
     const double residual = (W * r + b + std::max(t, 0.0) * g).norm();  // u = -t g
     if (residual < best.residual) best = {r, residual, true};
   };
+  const auto consider = [&](double phi) { consider_at(std::cos(phi), std::sin(phi)); };
   const auto refine = [&](double low, double high, double f_low, double f_high) {
     std::uintmax_t iterations = 200;
     const auto bracket = boost::math::tools::toms748_solve(consistency, low, high, f_low, f_high,
                                                            boost::math::tools::eps_tolerance<double>(), iterations);
     consider(0.5 * (bracket.first + bracket.second));
   };
-  // Warm start (the Gauss-Seidel's previous force of this contact): a bracket of +-kWarmBracket
-  // around its angle. Any root it gives with r_N > 0, t >= 0 solves the local problem (for the SOC
-  // law the solution is unique: a strictly convex QP), so the scan below is needed only without one.
+  // Warm start (the Gauss-Seidel's previous force of this contact). Any root with r_N > 0, t >= 0 near
+  // its angle solves the local problem (for the SOC law the solution is unique: a strictly convex QP),
+  // so the scan below is needed only without one. First Newton from the previous angle: once the
+  // sweeps settle it converges in one or two steps (the bracketed TOMS 748 took ~10 evaluations, each
+  // a sincos: two thirds of a bundle's solve); it gives up on a step longer than kWarmBracket (another
+  // root may be nearer) or after kNewtonSteps, and the bracket of +-kWarmBracket then the scan follow.
   if (guess != nullptr && (*guess)[0] > 0.0) {
+    const double tangential = tangential_norm(*guess);
+    double c = tangential > 0.0 ? (*guess)[1] / tangential : 1.0, s = tangential > 0.0 ? (*guess)[2] / tangential : 0.0;
+    double turned = 0.0;      // the angle moved so far (to first order in each step)
+    bool polishing = false;   // the last step was below 1e-9
+    for (int i = 0; i < kNewtonSteps; ++i) {
+      // f = a . (g x b) and its derivative along phi: a' = W (0, -mu s, mu c), g' = (0, -s, c).
+      const Vec3 a = W * Vec3(1.0, mu * c, mu * s), gb = Vec3(gamma, c, s).cross(b);
+      const double f = a.dot(gb);
+      if (f == 0.0) {
+        consider_at(c, s);
+        break;
+      }
+      const double slope = (W * Vec3(0.0, -mu * s, mu * c)).dot(gb) + a.dot(Vec3(0.0, -s, c).cross(b));
+      const double step = -f / slope;
+      turned += step;
+      if (!(std::abs(turned) < kWarmBracket)) break;  // also a zero slope (inf, nan)
+      // Rotate by atan(step) (= step to second order, which keeps Newton quadratic) and renormalise.
+      const double inverse_norm = 1.0 / std::sqrt(1.0 + step * step);
+      const double c_next = (c - step * s) * inverse_norm;
+      s = (s + step * c) * inverse_norm;
+      c = c_next;
+      // Quadratic convergence: after a step below 1e-12 the angle's error is ~ (f''/f') 1e-24, below
+      // 1e-9 one more step takes it there.
+      if (polishing || std::abs(step) <= 1e-12) {
+        consider_at(c, s);
+        break;
+      }
+      polishing = std::abs(step) <= 1e-9;
+    }
+    if (best.found) return best;
     const double phi0 = std::atan2((*guess)[2], (*guess)[1]);
     const double low = phi0 - kWarmBracket, high = phi0 + kWarmBracket;
     const double f_low = consistency(low), f_high = consistency(high);
@@ -152,11 +181,18 @@ Vec3 project_onto_friction_cone(const Vec3& x, double mu) {
 }
 
 Vec3 solve_local_cone_problem(const Mat3& W, const Vec3& b, double mu, ConeLaw law, const Vec3* guess) {
+  return solve_local_cone_problem(W, W.inverse(), b, mu, law, guess);
+}
+
+Vec3 solve_local_cone_problem(const Mat3& W, const Mat3& W_inverse, const Vec3& b, double mu, ConeLaw law,
+                              const Vec3* guess) {
   if (mu == 0.0) return Vec3(std::max(0.0, -b[0] / W(0, 0)), 0.0, 0.0);
-  const bool takes_off = law == ConeLaw::Coulomb ? b[0] >= 0.0 : mu * tangential_norm(b) <= b[0];
+  // The cone tests squared (no square root in the Gauss-Seidel's innermost call).
+  const double mu2 = mu * mu;
+  const bool takes_off = law == ConeLaw::Coulomb ? b[0] >= 0.0 : b[0] >= 0.0 && mu2 * (b[1] * b[1] + b[2] * b[2]) <= b[0] * b[0];
   if (takes_off) return Vec3::Zero();
-  const Vec3 stick = -W.ldlt().solve(b);
-  if (tangential_norm(stick) <= mu * stick[0]) return stick;
+  const Vec3 stick = -(W_inverse * b);
+  if (stick[0] >= 0.0 && stick[1] * stick[1] + stick[2] * stick[2] <= mu2 * stick[0] * stick[0]) return stick;
   const Boundary slide = boundary_solution(W, b, mu, law, guess);
   if (!slide.found)
     throw SolverError(law == ConeLaw::Coulomb ? "local Coulomb solver" : "local SOC solver",

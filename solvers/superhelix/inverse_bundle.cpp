@@ -10,6 +10,7 @@
 #include "rodvv/solvers/contact/factored_delassus.hpp"
 #include "rodvv/solvers/superhelix/inverse_contact.hpp"
 #include "rodvv/solvers/superhelix/kinematics.hpp"
+#include "sweep_order.hpp"
 #include "rodvv/solvers/superhelix/loads.hpp"
 
 namespace rodvv::solvers::superhelix {
@@ -99,12 +100,17 @@ InverseBundleResult inverse_statics_of_bundle(const std::vector<RodModel>& stran
   check_normals(kinematics, contacts);
   const auto m = Eigen::Index(contacts.size());
   InverseBundleResult result;
+  for (const BundleContact& c : contacts) result.frames.push_back(contact_frame(c.normal));
+  // The Gauss-Seidel's order (sweep_order.hpp): W, b, mu and r are in it.
+  std::vector<std::size_t> distal_point;
+  for (const BundleContact& c : contacts)
+    distal_point.push_back(c.other_strand == kObstacle ? c.point : std::max(c.point, c.other_point));
+  const std::vector<std::size_t> order = detail::free_end_first_order(distal_point);
   VecX mu(m), b = VecX::Zero(3 * m);
   double trace = 0.0;
   for (Eigen::Index k = 0; k < m; ++k) {
-    const BundleContact& c = contacts[std::size_t(k)];
-    const Mat3 frame = contact_frame(c.normal);
-    result.frames.push_back(frame);
+    const BundleContact& c = contacts[order[std::size_t(k)]];
+    const Mat3& frame = result.frames[order[std::size_t(k)]];
     mu[k] = c.mu;
     std::vector<contact::ContactSide> sides{{c.strand, contact_rows(frame, kinematics[c.strand], c.point)}};
     if (c.other_strand == c.strand) {  // a self-contact: one side, frame^T (J_a - J_b)
@@ -126,7 +132,9 @@ InverseBundleResult inverse_statics_of_bundle(const std::vector<RodModel>& stran
   W.compliance = VecX::Constant(m, 2.0 * gamma);
   const contact::ConeSolution socqp =
       contact::solve_cone_complementarity(W, b, mu, contact::ConeLaw::SecondOrderCone, options.solver);
-  result.local_forces = socqp.r;
+  result.local_forces.resize(3 * m);
+  for (Eigen::Index k = 0; k < m; ++k)
+    result.local_forces.segment<3>(3 * Eigen::Index(order[std::size_t(k)])) = socqp.r.segment<3>(3 * k);
   result.sweeps = socqp.sweeps;
   result.residual = socqp.residual;
   result.cone_violation = socqp.cone_violation;

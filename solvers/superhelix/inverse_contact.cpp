@@ -10,6 +10,7 @@
 #include "rodvv/common/validation.hpp"
 #include "rodvv/solvers/superhelix/kinematics.hpp"
 #include "rodvv/solvers/superhelix/loads.hpp"
+#include "sweep_order.hpp"
 
 namespace rodvv::solvers::superhelix {
 
@@ -51,14 +52,18 @@ InverseContactResult inverse_statics_with_contacts(const RodModel& model, const 
   const VecX force = external_generalised_force(model, kinematics);
   const auto m = Eigen::Index(contacts.size());
   InverseContactResult result;
+  for (const RodContact& contact : contacts) result.frames.push_back(contact_frame(contact.normal));
+  // The Gauss-Seidel's order (sweep_order.hpp): H, W, b, mu and r are in it.
+  std::vector<std::size_t> distal_point;
+  for (const RodContact& contact : contacts) distal_point.push_back(contact.point);
+  const std::vector<std::size_t> order = detail::free_end_first_order(distal_point);
   MatX H(3 * m, q.size());
   VecX mu(m);
   for (Eigen::Index c = 0; c < m; ++c) {
-    const RodContact& contact = contacts[std::size_t(c)];
+    const RodContact& contact = contacts[order[std::size_t(c)]];
     const GaussPoint& point = kinematics.points()[contact.point];
-    const Mat3 frame = contact_frame(contact.normal);
-    result.frames.push_back(frame);
-    H.middleRows(3 * c, 3) = frame.transpose() * kinematics.position_jacobian(point.element, point.sigma);
+    H.middleRows(3 * c, 3) =
+        result.frames[order[std::size_t(c)]].transpose() * kinematics.position_jacobian(point.element, point.sigma);
     mu[c] = contact.mu;
   }
   const MatX HKinv = H * k.cwiseInverse().asDiagonal();
@@ -70,11 +75,14 @@ InverseContactResult inverse_statics_with_contacts(const RodModel& model, const 
   const VecX b = -HKinv * z;
   const contact::ConeSolution socqp =
       contact::solve_cone_complementarity(W, b, mu, contact::ConeLaw::SecondOrderCone, options.solver);
-  result.local_forces = socqp.r;
+  result.local_forces.resize(3 * m);
+  for (Eigen::Index c = 0; c < m; ++c)
+    result.local_forces.segment<3>(3 * Eigen::Index(order[std::size_t(c)])) = socqp.r.segment<3>(3 * c);
   result.sweeps = socqp.sweeps;
   result.residual = socqp.residual;
   result.cone_violation = socqp.cone_violation;
-  for (Eigen::Index c = 0; c < m; ++c) result.forces.push_back(result.frames[std::size_t(c)] * socqp.r.segment<3>(3 * c));
+  for (Eigen::Index c = 0; c < m; ++c)
+    result.forces.push_back(result.frames[std::size_t(c)] * result.local_forces.segment<3>(3 * c));
   result.natural_strain = q - (force + H.transpose() * socqp.r).cwiseQuotient(k);
   return result;
 }

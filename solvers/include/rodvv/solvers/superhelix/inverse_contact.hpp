@@ -14,7 +14,8 @@
 //
 // a convex SOCQP whose KKT conditions are the plain SOC complementarity K_mu ∋ r _|_ W r + b ∈ K_mu*,
 // solved by the same block Gauss-Seidel as the forward frictional problem with the per-contact law
-// swapped (contact/cone_complementarity.hpp, ConeLaw::SecondOrderCone; So-bogus does the same).
+// swapped (contact/cone_complementarity.hpp, ConeLaw::SecondOrderCone; So-bogus does the same), which
+// visits the contacts from the free end toward the root (fewer sweeps), whatever their order here.
 // H: the rows (normal, t1, t2)^T dr_g/dq of each contact's Gauss point (kinematics.hpp), its frame
 // built from the normal (t1 = the unit vector orthogonal to n in the plane of n and the world axis
 // least aligned with it, t2 = n x t1). gamma is given relative to the mean diagonal of H K^-2 H^T
