@@ -65,6 +65,10 @@ INSTANTIATE_TEST_SUITE_P(
                       // same sweeps at any units, measured); the round trips are in eps, at round-off.
                       UnitsCase{"inverse/bundle", {"round_trip_error", "equilibrium_residual"}},
                       UnitsCase{"inverse/friction-cone", {"round_trip_error", "equilibrium_residual"}},
+                      // The forward frictional statics: the tip deflection in units of L; the sticking rod's
+                      // displacement, the law's alignments and the residuals are round-off.
+                      UnitsCase{"inverse/incline-sliding", {"displacement_below", "slip_alignment", "cone_violation",
+                                                            "penetration", "equilibrium_residual", "contact_residual"}},
                       // The pendulum's g, l and its inputs in time units (the start rate v0, the horizon t_end):
                       // fixed steps in units of 1/omega, errors in rad and in units of 1/omega.
                       UnitsCase{"pendulum/rotation/rk4", {"steps"}},

@@ -36,6 +36,7 @@
 
 #include "../case_builder.hpp"
 #include "../knot/superhelix_on_curve.hpp"
+#include "friction_law.hpp"
 #include "inverse_cases.hpp"
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
@@ -156,24 +157,8 @@ LevelOutput run(const Parameters& p, double level) {
     H_balance = std::max(H_balance, std::abs(balanced - reference_H) / k.T);
   }
 
-  // The friction law at the loaded contacts.
-  double largest_normal = 0.0;
-  for (const auto& c : state.contacts) largest_normal = std::max(largest_normal, c.local_force[0]);
-  std::size_t loaded_contacts = 0, sticking = 0;
-  double cone_violation = 0.0, slip_alignment = 0.0;
-  for (const auto& c : state.contacts) {
-    const double r_N = c.local_force[0], r_T = c.local_force.tail<2>().norm();
-    cone_violation = std::max(cone_violation, (r_T - k.mu * r_N) / largest_normal);
-    if (!(r_N > 1e-9 * largest_normal)) continue;
-    ++loaded_contacts;
-    const double slip = c.slip.tail<2>().norm();
-    if (!(r_T >= (1.0 - 1e-9) * k.mu * r_N) || !(slip > 0.0)) {
-      ++sticking;
-      continue;
-    }
-    slip_alignment = std::max(slip_alignment, 1.0 + c.local_force.tail<2>().dot(c.slip.tail<2>()) / (r_T * slip));
-  }
-  if (loaded_contacts == 0)
+  const FrictionLaw law = friction_law(state.contacts, k.mu);
+  if (law.loaded == 0)
     throw SolverError("superhelix frictional statics", "the rod does not touch the cylinder", iterations, state.residual);
 
   const ref::CapstanSolution reference = ref::capstan_with_bending({k.B, k.R, k.mu, k.phi, k.T});
@@ -181,12 +166,12 @@ LevelOutput run(const Parameters& p, double level) {
   out.metrics["hold_tension"] = error_sample(hold_tension, reference.hold_tension);
   out.metrics["H_balance"] = value_sample(H_balance, 1.0);
   out.metrics["root_shear"] = value_sample(root_shear, 1.0);
-  out.metrics["stick_fraction"] = value_sample(double(sticking) / double(loaded_contacts), 1.0);
-  out.metrics["slip_alignment"] = value_sample(slip_alignment, 1.0);
-  out.metrics["cone_violation"] = value_sample(std::max(0.0, cone_violation), 1.0);
+  out.metrics["stick_fraction"] = value_sample(double(law.loaded - law.sliding) / double(law.loaded), 1.0);
+  out.metrics["slip_alignment"] = value_sample(law.slip_alignment, 1.0);
+  out.metrics["cone_violation"] = value_sample(law.cone_violation, 1.0);
   out.metrics["penetration"] = value_sample(state.penetration / k.R, 1.0);
   out.metrics["capstan_ratio"] = diagnostic(hold_tension / (k.T * std::exp(k.mu * k.phi)));
-  out.metrics["loaded_contacts"] = diagnostic(double(loaded_contacts));
+  out.metrics["loaded_contacts"] = diagnostic(double(law.loaded));
   out.metrics["iterations"] = diagnostic(double(iterations));
   out.metrics["equilibrium_residual"] = diagnostic(state.residual);
   out.metrics["contact_residual"] = diagnostic(state.contact_residual);

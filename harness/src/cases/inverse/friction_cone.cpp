@@ -31,6 +31,7 @@
 
 #include "../case_builder.hpp"
 #include "forward_round_trip.hpp"
+#include "incline.hpp"
 #include "inverse_cases.hpp"
 #include "rodvv/solvers/superhelix/inverse_contact.hpp"
 #include "rodvv/solvers/superhelix/kinematics.hpp"
@@ -56,10 +57,7 @@ OnIncline on_incline(const Parameters& p, double ratio) {
   const double L = parameter_value(p, "L"), EI = parameter_value(p, "EI"), mu = parameter_value(p, "mu");
   const double alpha = std::atan(ratio * mu);
   const auto N = std::size_t(parameter_value(p, "N"));
-  // The incline: its normal is the vertical tilted by alpha about the horizontal axis `across`.
-  const Vec3 across(std::cos(0.7), std::sin(0.7), 0.0);  // horizontal, in the plane
-  const Vec3 downhill = -(std::cos(alpha) * across.cross(Vec3::UnitZ()) + std::sin(alpha) * Vec3::UnitZ());
-  const Vec3 normal = across.cross(downhill);                  // out of the plane, upwards
+  const auto [across, downhill, normal] = incline(alpha);
   OnIncline r;
   sh::RodModel& m = r.model;
   m.length = L;

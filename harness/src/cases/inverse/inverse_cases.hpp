@@ -13,5 +13,6 @@ void add_curve_fit(Registry& registry);            // from a polyline to a rest 
 void add_capstan(Registry& registry);              // forward frictional statics: the capstan with bending
 void add_bundle(Registry& registry);               // many strands in frictional contact: the factored SOCQP
 void add_friction_cone(Registry& registry);        // the cone's threshold tan alpha = mu in the inverse SOCQP
+void add_incline_sliding(Registry& registry);      // the same threshold in the forward frictional statics
 
 }  // namespace rodvv::harness::inverse_cases

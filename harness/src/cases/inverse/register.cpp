@@ -11,6 +11,7 @@ void register_inverse_cases(Registry& registry) {
   inverse_cases::add_capstan(registry);
   inverse_cases::add_bundle(registry);
   inverse_cases::add_friction_cone(registry);
+  inverse_cases::add_incline_sliding(registry);
 }
 
 }  // namespace rodvv::harness
