@@ -50,18 +50,18 @@ ConeSolution block_gauss_seidel(Operator& W, const VecX& b, const VecX& mu, Cone
     solution.u = b;
     return solution;
   }
-  // The residual costs another pass over W (as much as a sweep: the dense product, or for a bundle the
-  // memory traffic of the factors), so it is evaluated on a schedule: after the first sweep, then at
-  // half the sweeps its observed linear rate between the last two evaluations predicts to the
-  // tolerance, at most a quarter of the sweeps so far ahead (a rate seen on a plateau may be too slow
-  // by any factor; the cap bounds the sweeps done beyond convergence to a quarter). Near the tolerance
-  // it is evaluated every sweep, and at the last one; the stopping test is the full residual's.
   // Each contact's block and its inverse, once (the local stick solve needs W_kk^-1 every sweep).
   std::vector<Mat3> blocks(static_cast<std::size_t>(n)), inverses(static_cast<std::size_t>(n));
   for (Eigen::Index k = 0; k < n; ++k) {
     blocks[std::size_t(k)] = W.block(k);
     inverses[std::size_t(k)] = blocks[std::size_t(k)].inverse();
   }
+  // The residual costs another pass over W (as much as a sweep: the dense product, or for a bundle the
+  // memory traffic of the factors), so it is evaluated on a schedule: after the first sweep, then at
+  // half the sweeps its observed linear rate between the last two evaluations predicts to the
+  // tolerance, at most a quarter of the sweeps so far ahead (a rate seen on a plateau may be too slow
+  // by any factor; the cap bounds the sweeps done beyond convergence to a quarter). Near the tolerance
+  // it is evaluated every sweep, and at the last one; the stopping test is the full residual's.
   std::size_t next_check = 1, last_check = 0;
   double last_residual = 0.0;
   for (std::size_t sweep = 1; sweep <= settings.max_sweeps; ++sweep) {

@@ -10,8 +10,8 @@
 #include "rodvv/solvers/contact/factored_delassus.hpp"
 #include "rodvv/solvers/superhelix/inverse_contact.hpp"
 #include "rodvv/solvers/superhelix/kinematics.hpp"
-#include "sweep_order.hpp"
 #include "rodvv/solvers/superhelix/loads.hpp"
+#include "sweep_order.hpp"
 
 namespace rodvv::solvers::superhelix {
 
