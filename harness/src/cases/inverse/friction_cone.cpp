@@ -54,23 +54,14 @@ struct OnIncline {
 
 // The rod on the incline tan alpha = ratio mu.
 OnIncline on_incline(const Parameters& p, double ratio) {
-  const double L = parameter_value(p, "L"), EI = parameter_value(p, "EI"), mu = parameter_value(p, "mu");
-  const double alpha = std::atan(ratio * mu);
+  const double L = parameter_value(p, "L"), mu = parameter_value(p, "mu");
   const auto N = std::size_t(parameter_value(p, "N"));
-  const auto [across, downhill, normal] = incline(alpha);
+  const Incline plane = incline(std::atan(ratio * mu));
   OnIncline r;
-  sh::RodModel& m = r.model;
-  m.length = L;
-  m.elements = N;
-  m.stiffness = Vec3(0.6 * EI, 1.4 * EI, EI);  // bends in the plane about n2 = the normal
-  m.line_density = parameter_value(p, "rhoS");
-  m.gravity = Vec3(0.0, 0.0, -parameter_value(p, "g"));
-  m.gauss_points = 1;  // the contacts' points are the weight's quadrature points
-  m.root_position = Vec3(0.3, -0.2, 0.1) * L;
-  m.root_frame << across, downhill, normal;
+  r.model = rod_across_incline(p, N, plane);
   r.q = VecX::Zero(Eigen::Index(3 * N));
   for (std::size_t e = 0; e < N; ++e) r.q[Eigen::Index(3 * e + 2)] = 0.5 / L;  // radius 2 L, curving downhill
-  for (std::size_t g = 0; g < N; ++g) r.contacts.push_back({g, normal, mu});
+  for (std::size_t g = 0; g < N; ++g) r.contacts.push_back({g, plane.normal, mu});
   return r;
 }
 

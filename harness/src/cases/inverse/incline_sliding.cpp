@@ -73,21 +73,13 @@ struct OnIncline {
 
 // The straight rod laid on the incline tan alpha = ratio mu, and its equilibrium once its weight is on.
 OnIncline settle(const Parameters& p, std::size_t elements, double ratio) {
-  const double L = parameter_value(p, "L"), EI = parameter_value(p, "EI"), mu = parameter_value(p, "mu");
-  const auto [across, downhill, normal] = incline(std::atan(ratio * mu));
-  sh::RodModel m;
-  m.length = L;
-  m.elements = elements;
-  m.stiffness = Vec3(0.6 * EI, 1.4 * EI, EI);  // bends in the plane about n2 = the normal: EI2 = EI
-  m.line_density = parameter_value(p, "rhoS");
-  m.gravity = Vec3(0.0, 0.0, -parameter_value(p, "g"));
-  m.gauss_points = 1;  // the contacts' points are the weight's quadrature points
-  m.root_position = Vec3(0.3, -0.2, 0.1) * L;
-  m.root_frame << across, downhill, normal;
-  const sh::RigidObstacle plane{sh::RigidObstacle::Shape::Plane, m.root_position, normal, 0.0, mu};
+  const double mu = parameter_value(p, "mu");
+  const Incline on = incline(std::atan(ratio * mu));
+  const sh::RodModel m = rod_across_incline(p, elements, on);
+  const sh::RigidObstacle plane{sh::RigidObstacle::Shape::Plane, m.root_position, on.normal, 0.0, mu};
   OnIncline out;
   out.model = m;
-  out.downhill = downhill;
+  out.downhill = on.downhill;
   out.start = sh::frictional_start(m, VecX::Zero(Eigen::Index(3 * elements)));
   out.rest = sh::solve_frictional_increment(m, {plane}, out.start);
   return out;
