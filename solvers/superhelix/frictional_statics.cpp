@@ -67,6 +67,10 @@ std::optional<VecX> active_set_contact_solve(const MatX& W, const VecX& b, const
   // Rounds: all violated statuses flipped at once first (30 rounds); if that cycles, one at a time, the
   // least index first (Murty's least-index rule, finite for the frictionless LCP with W positive definite).
   const int rounds = 30 + 8 * int(m);
+  // The rows of W (slips, a compliance times forces) are divided by W's largest diagonal entry, so that they
+  // are forces like the rows r = 0 and r_T + mu r_N s = 0 beside them: the LU's pivoting then does not depend
+  // on the problem's force unit (unscaled, the hanging fold converged at one unit of force and not at 0.3 of it).
+  const double compliance = W.diagonal().maxCoeff();
   for (int round = 0; round < rounds; ++round) {
     const bool one_at_a_time = round >= 30;
     bool flipped = false;
@@ -79,12 +83,12 @@ std::optional<VecX> active_set_contact_solve(const MatX& W, const VecX& b, const
           system.block<3, 3>(i, i).setIdentity();
           break;
         case Status::Stick:
-          system.middleRows(i, 3) = W.middleRows(i, 3);
-          rhs.segment<3>(i) = -b.segment<3>(i);
+          system.middleRows(i, 3) = W.middleRows(i, 3) / compliance;
+          rhs.segment<3>(i) = -b.segment<3>(i) / compliance;
           break;
         case Status::Slide: {
-          system.row(i) = W.row(i);
-          rhs[i] = -b[i];
+          system.row(i) = W.row(i) / compliance;
+          rhs[i] = -b[i] / compliance;
           const Vec2& s = direction[std::size_t(c)];  // r_T + mu r_N s = 0
           system(i + 1, i + 1) = 1.0, system(i + 1, i) = mu[c] * s[0];
           system(i + 2, i + 2) = 1.0, system(i + 2, i) = mu[c] * s[1];
@@ -137,6 +141,9 @@ void validate_obstacles(const std::vector<RigidObstacle>& obstacles) {
     if (!o.point.allFinite()) throw InputError("obstacles", which + " has a point that is not finite");
     if (o.shape != RigidObstacle::Shape::Ball && !unit(o.direction))
       throw InputError("obstacles", which + " must have a finite unit direction (|d| - 1 within 1e-10)");
+    if (o.shape == RigidObstacle::Shape::Edge && !(unit(o.side) && std::abs(o.side.dot(o.direction)) <= 1e-10))
+      throw InputError("obstacles", which + " (an edge) must have a finite unit side orthogonal to its direction "
+                                            "(within 1e-10)");
     if (o.shape != RigidObstacle::Shape::Plane && !(std::isfinite(o.radius) && o.radius > 0.0))
       throw InputError("obstacles", which + " has radius " + format_value(o.radius) + ": must be finite and > 0");
     if (!(std::isfinite(o.mu) && o.mu >= 0.0))
@@ -164,6 +171,24 @@ ObstacleProximity obstacle_proximity(const RigidObstacle& obstacle, const Vec3& 
       result.gap = distance - obstacle.radius;
       result.normal = radial / distance;
       result.normal_gradient = (off_axis - result.normal * result.normal.transpose()) / distance;
+      return result;
+    }
+    case RigidObstacle::Shape::Edge: {
+      // Coordinates across the two faces; beyond both, the rounding (a cylinder about the edge's axis).
+      const double up = obstacle.direction.dot(offset), out = obstacle.side.dot(offset);
+      if (up > 0.0 && out > 0.0) {
+        const Vec3 radial = up * obstacle.direction + out * obstacle.side;
+        const double distance = std::hypot(up, out);
+        const Mat3 off_axis =
+            obstacle.direction * obstacle.direction.transpose() + obstacle.side * obstacle.side.transpose();
+        result.gap = distance - obstacle.radius;
+        result.normal = radial / distance;
+        result.normal_gradient = (off_axis - result.normal * result.normal.transpose()) / distance;
+      } else {  // over a face (or inside, where the nearer face's distance is the larger coordinate)
+        const bool top = up >= out;
+        result.gap = (top ? up : out) - obstacle.radius;
+        result.normal = top ? obstacle.direction : obstacle.side;
+      }
       return result;
     }
   }

@@ -69,6 +69,9 @@ INSTANTIATE_TEST_SUITE_P(
                       // displacement, the law's alignments and the residuals are round-off.
                       UnitsCase{"inverse/incline-sliding", {"displacement_below", "slip_alignment", "cone_violation",
                                                             "penetration", "equilibrium_residual", "contact_residual"}},
+                      // The hanging fold: the push in units of w h, H in units of w h; the rest round-off.
+                      UnitsCase{"inverse/hanging-fold", {"tangential_force", "penetration", "equilibrium_residual",
+                                                         "contact_residual"}},
                       // The pendulum's g, l and its inputs in time units (the start rate v0, the horizon t_end):
                       // fixed steps in units of 1/omega, errors in rad and in units of 1/omega.
                       UnitsCase{"pendulum/rotation/rk4", {"steps"}},

@@ -110,7 +110,8 @@ TEST(SuperHelixFrictionalStatics, ObstacleNormalsAndTheirGradientsMatchFiniteDif
   const std::vector<sh::RigidObstacle> obstacles{
       {sh::RigidObstacle::Shape::Plane, Vec3(0.1, 0.2, -0.3), axis, 0.0, 0.2},
       {sh::RigidObstacle::Shape::Ball, Vec3(0.1, 0.2, -0.3), Vec3::UnitZ(), 0.7, 0.2},
-      {sh::RigidObstacle::Shape::Cylinder, Vec3(0.1, 0.2, -0.3), axis, 0.7, 0.2}};
+      {sh::RigidObstacle::Shape::Cylinder, Vec3(0.1, 0.2, -0.3), axis, 0.7, 0.2},
+      {sh::RigidObstacle::Shape::Edge, Vec3(0.1, 0.2, -0.3), axis, 0.7, 0.2, Vec3(0.8, 0.0, -0.3).normalized()}};
   const Vec3 x(1.1, -0.6, 0.9);
   const double h = 1e-6;
   for (const auto& obstacle : obstacles) {
@@ -123,6 +124,29 @@ TEST(SuperHelixFrictionalStatics, ObstacleNormalsAndTheirGradientsMatchFiniteDif
       EXPECT_LE(((plus.normal - minus.normal) / (2 * h) - at.normal_gradient.col(j)).norm(), 1e-8);
     }
   }
+}
+
+TEST(SuperHelixFrictionalStatics, AnEdgeIsATopAFrontAndARoundingBetween) {
+  // A table's edge: top face normal +z, front face normal +x, rounded by 0.2 about the y axis through (1, 2, 3).
+  const sh::RigidObstacle edge{sh::RigidObstacle::Shape::Edge, Vec3(1, 2, 3), Vec3::UnitZ(), 0.2, 0.0, Vec3::UnitX()};
+  const Vec3 corner(1, 2, 3);
+  const auto over_top = sh::obstacle_proximity(edge, corner + Vec3(-1.0, 0.3, 0.5));
+  EXPECT_NEAR(over_top.gap, 0.3, 1e-15);
+  EXPECT_EQ(over_top.normal, Vec3::UnitZ());
+  EXPECT_EQ(over_top.normal_gradient, Mat3::Zero());
+  const auto before_front = sh::obstacle_proximity(edge, corner + Vec3(0.4, 0.3, -2.0));
+  EXPECT_NEAR(before_front.gap, 0.2, 1e-15);
+  EXPECT_EQ(before_front.normal, Vec3::UnitX());
+  const auto round = sh::obstacle_proximity(edge, corner + Vec3(0.3, -5.0, 0.4));
+  EXPECT_NEAR(round.gap, 0.3, 1e-15);
+  EXPECT_LE((round.normal - Vec3(0.6, 0.0, 0.8)).norm(), 1e-15);
+  // Inside the solid the nearer face decides: 0.1 behind the front, 0.5 below the top.
+  EXPECT_NEAR(sh::obstacle_proximity(edge, corner + Vec3(-0.1, 0.0, -0.5)).gap, -0.3, 1e-15);
+  // The normal is continuous where a face meets the rounding.
+  const auto top_end = sh::obstacle_proximity(edge, corner + Vec3(-1e-12, 0.0, 0.4));
+  const auto round_start = sh::obstacle_proximity(edge, corner + Vec3(1e-12, 0.0, 0.4));
+  EXPECT_LE((top_end.normal - round_start.normal).norm(), 1e-11);
+  EXPECT_NEAR(top_end.gap, round_start.gap, 1e-15);
 }
 
 TEST(SuperHelixFrictionalStatics, RefusesBadInputByName) {
@@ -141,6 +165,12 @@ TEST(SuperHelixFrictionalStatics, RefusesBadInputByName) {
   EXPECT_EQ(with_obstacle([](sh::RigidObstacle& o) {
               o.shape = sh::RigidObstacle::Shape::Ball;
               o.radius = 0.0;
+            }),
+            "obstacles");
+  EXPECT_EQ(with_obstacle([](sh::RigidObstacle& o) {
+              o.shape = sh::RigidObstacle::Shape::Edge;
+              o.radius = 0.1;
+              o.side = (o.side + 0.01 * o.direction).normalized();  // not orthogonal to the direction
             }),
             "obstacles");
   sh::FrictionalStaticResult bad = start;

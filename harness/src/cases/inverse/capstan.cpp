@@ -40,11 +40,8 @@
 #include "inverse_cases.hpp"
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/validation.hpp"
-#include "rodvv/invariants/noether3d.hpp"
 #include "rodvv/references/capstan.hpp"
 #include "rodvv/solvers/superhelix/frictional_statics.hpp"
-#include "rodvv/solvers/superhelix/kinematics.hpp"
-#include "rodvv/solvers/superhelix/solution.hpp"
 
 namespace rodvv::harness::inverse_cases {
 
@@ -124,38 +121,12 @@ LevelOutput run(const Parameters& p, double level) {
     iterations += state.iterations;
   }
 
-  // The contact forces as the model's dead point forces: the solution struct's n(s) carries them.
-  sh::RodModel loaded = model;
-  loaded.point_forces.assign(model.elements * model.gauss_points, Vec3::Zero());
-  for (const auto& c : state.contacts) loaded.point_forces[c.point] += c.force;
-  const SpatialRodSolution solution = sh::make_solution(loaded, state.q);
-  const sh::Kinematics kinematics(model, state.q);
+  // The root's reaction n(0): the tip force plus every contact force (no gravity here).
   Vec3 root_force = model.end_force;
-  for (const auto& f : loaded.point_forces) root_force += f;
+  for (const auto& c : state.contacts) root_force += c.force;
   const double hold_tension = root_force.dot(model.root_frame.col(0));
   const double root_shear = (root_force - hold_tension * model.root_frame.col(0)).norm() / hold_tension;
-
-  // H with its predicted jumps -f.t at the contact forces (a force at a station counts half there).
-  const auto H = invariants::noether3d_flattened(solution);
-  const double ell = sh::element_length(model);
-  struct Jump {
-    double s, tangential;  // where, and f.t there
-  };
-  std::vector<Jump> jumps;
-  for (const auto& c : state.contacts) {
-    const auto& point = kinematics.points()[c.point];
-    jumps.push_back({double(point.element) * ell + point.sigma,
-                     c.force.dot(kinematics.frame(point.element, point.sigma).col(0))});
-  }
-  double H_balance = 0.0, reference_H = 0.0;
-  for (std::size_t i = 0; i < solution.s.size(); ++i) {
-    double passed = 0.0;
-    for (const auto& jump : jumps)
-      passed += (jump.s < solution.s[i] ? 1.0 : jump.s == solution.s[i] ? 0.5 : 0.0) * jump.tangential;
-    const double balanced = H[i] + passed;
-    if (i == 0) reference_H = balanced;
-    H_balance = std::max(H_balance, std::abs(balanced - reference_H) / k.T);
-  }
+  const double H_balance = noether_along_contacts(model, state, k.T).balance;
 
   const FrictionLaw law = friction_law(state.contacts, k.mu);
   if (law.loaded == 0)
@@ -201,14 +172,7 @@ void add_capstan(Registry& registry) {
   // contact's ends fall anywhere in an element, and the point forces there (references/capstan.hpp) sit on
   // the nearest Gauss point, so the error changes with where the ends fall, not only with h. No order is
   // fitted; each is held under twice its first-order envelope, C = 2 max_i e_i N_i, at every level.
-  const auto envelope = [](const std::string& metric, double constant) {
-    GateSpec gate = scaled_upper_bound_gate(
-        metric, constant, 1.0, GateScope::AllLevels,
-        "twice the first-order envelope of the errors measured at the default levels (the contact's ends move "
-        "within elements as N changes, so the constant jumps and no order is fitted)");
-    gate.measured = true;
-    return gate;
-  };
+  const auto envelope = contact_envelope_gate;
   std::vector<GateSpec> gates{
       envelope("hold_tension", 1.61),  // 2 x 6.28e-3 x 128
       envelope("H_balance", 5.03),     // 2 x 0.0197 x 128

@@ -14,5 +14,6 @@ void add_capstan(Registry& registry);              // forward frictional statics
 void add_bundle(Registry& registry);               // many strands in frictional contact: the factored SOCQP
 void add_friction_cone(Registry& registry);        // the cone's threshold tan alpha = mu in the inverse SOCQP
 void add_incline_sliding(Registry& registry);      // the same threshold in the forward frictional statics
+void add_hanging_fold(Registry& registry);         // the hanging fold: a heavy rod over a ledge (H with friction)
 
 }  // namespace rodvv::harness::inverse_cases

@@ -12,6 +12,7 @@ void register_inverse_cases(Registry& registry) {
   inverse_cases::add_bundle(registry);
   inverse_cases::add_friction_cone(registry);
   inverse_cases::add_incline_sliding(registry);
+  inverse_cases::add_hanging_fold(registry);
 }
 
 }  // namespace rodvv::harness

@@ -40,6 +40,7 @@
 // Reported: the contact law's natural-map residual at the last solve and the largest penetration.
 //
 // Obstacles are convex and the rod stays outside: a half-space (plane), a ball, an infinite cylinder,
+// a right-angled edge (a table's: the quarter-space behind two perpendicular faces, its edge rounded),
 // each with its own friction coefficient. `radius` is the distance at which the rod's centreline
 // touches (the obstacle's radius plus the rod's).
 // Bad input (InputError naming it): as validate(model); point forces or self-contact in the model
@@ -57,18 +58,26 @@
 
 namespace rodvv::solvers::superhelix {
 
+// The edge: the points within `radius` of the quarter-space {(x - point).direction <= 0, (x - point).side
+// <= 0}, i.e. a solid whose faces have the outward normals `direction` (a table's top) and `side` (its
+// front), meeting at an edge rounded with the radius `radius` about the line through `point` along
+// direction x side. Its gap is the distance to that quarter-space minus the radius: an exact signed
+// distance outside (|grad| = 1, the normal continuous over the rounding).
 struct RigidObstacle {
-  enum class Shape { Plane, Ball, Cylinder };
+  enum class Shape { Plane, Ball, Cylinder, Edge };
   Shape shape = Shape::Plane;
-  Vec3 point = Vec3::Zero();       // plane: a point of it; ball: the centre; cylinder: a point of the axis
-  Vec3 direction = Vec3::UnitZ();  // plane: the unit normal toward the rod; cylinder: the unit axis
-  double radius = 0.0;             // ball, cylinder: > 0, to the rod's centreline
+  Vec3 point = Vec3::Zero();       // plane: a point of it; ball: the centre; cylinder: a point of the axis;
+                                   //   edge: a point of the rounding's axis
+  Vec3 direction = Vec3::UnitZ();  // plane: the unit normal toward the rod; cylinder: the unit axis; edge: the
+                                   //   unit outward normal of its first face
+  double radius = 0.0;             // ball, cylinder, edge: > 0, to the rod's centreline
   double mu = 0.0;                 // Coulomb friction coefficient, >= 0
+  Vec3 side = Vec3::UnitX();       // edge: the unit outward normal of its second face, orthogonal to direction
 };
 
 // The gap of x (> 0 outside), the outward unit normal at the closest surface point and its gradient
-// dn/dx (0 for a plane; (I - n n^T) / d for a ball, (P - n n^T) / d for a cylinder, d the distance to
-// the centre or axis and P the projection off the axis).
+// dn/dx (0 for a plane; (I - n n^T) / d for a ball, (P - n n^T) / d for a cylinder or an edge's
+// rounding, d the distance to the centre or axis and P the projection off the axis; 0 over an edge's faces).
 struct ObstacleProximity {
   double gap = 0.0;
   Vec3 normal = Vec3::UnitZ();
@@ -77,7 +86,8 @@ struct ObstacleProximity {
 ObstacleProximity obstacle_proximity(const RigidObstacle& obstacle, const Vec3& x);
 
 // InputError "obstacles" naming the obstacle: a point that is not finite, a direction that is not a unit
-// vector to 1e-10 (plane, cylinder), a radius not > 0 (ball, cylinder), mu < 0 or not finite.
+// vector to 1e-10 (plane, cylinder, edge), an edge's side that is not one or not orthogonal to its
+// direction to 1e-10, a radius not > 0 (ball, cylinder, edge), mu < 0 or not finite.
 void validate_obstacles(const std::vector<RigidObstacle>& obstacles);
 
 struct FrictionalStaticOptions {
