@@ -58,6 +58,7 @@ NoetherAlongContacts noether_along_contacts(const solvers::superhelix::RodModel&
   }
   return out;
 }
+
 GateSpec contact_envelope_gate(const std::string& metric, double constant) {
   GateSpec gate = scaled_upper_bound_gate(
       metric, constant, 1.0, GateScope::AllLevels,
