@@ -34,7 +34,6 @@
 // just above its 1e-12 tolerance.
 // Scales: d at 30 degrees to x in the horizontal plane, the floor at z = 0.05 (nothing along a coordinate axis or
 // at the origin); EI1 (out of plane) = 1.8 B, GJ = 0.6 B.
-#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -78,10 +77,12 @@ struct Laid {
 constexpr double kClampLift = 0.04, kClampRun = 0.6;  // the clamp over the step, its span down: in units of h
 constexpr double kFoot = 0.4;                          // the radius of the laid arc onto the floor, in units of h
 
+// The height at which the laid rod leaves the nose, kTurn round it.
+double leave_height(const Fold& k) { return k.h - k.rounding + k.rounding * std::cos(kTurn); }
+
 // The laid span from the nose to the arc onto the floor, straight at kTurn below the horizontal.
 double span_length(const Fold& k) {
-  const double leave_z = k.h - k.rounding + k.rounding * std::cos(kTurn);
-  return (leave_z - kFoot * k.h * (1.0 - std::cos(kTurn))) / std::sin(kTurn);
+  return (leave_height(k) - kFoot * k.h * (1.0 - std::cos(kTurn))) / std::sin(kTurn);
 }
 
 // The laid rod's length, the clamp's span counted straight (it is 0.04 h lower over 0.6 h: 0.2 % longer).
@@ -94,8 +95,7 @@ Laid lay(const Fold& k, double rhoS, double g, std::size_t elements) {
   const auto at = [&](double xi, double z) { return Vec3(kFloorPoint + xi * kAlong + z * Vec3::UnitZ()); };
   const double foot = kFoot * k.h;
   const Vec3 round_centre(-k.rounding, 0.0, k.h - k.rounding);  // (xi, -, z)
-  const double leave_z = k.h - k.rounding + k.rounding * std::cos(kTurn);
-  const double span = span_length(k);
+  const double leave_z = leave_height(k), span = span_length(k);
   const double leave_xi = -k.rounding + k.rounding * std::sin(kTurn);
   const double land_xi = leave_xi + span * std::cos(kTurn) + foot * std::sin(kTurn);
   std::vector<Vec3> curve;
@@ -146,21 +146,15 @@ LevelOutput run(const Parameters& p, double level) {
   const sh::RodModel& model = laid.model;
   const sh::FrictionalStaticResult state =
       sh::solve_frictional_increment(model, {laid.edge, laid.floor}, sh::frictional_start(model, laid.q));
-  std::size_t ledge_contacts = 0, floor_contacts = 0;
-  double ledge_push = 0.0, largest = 0.0;
-  for (const auto& c : state.contacts) largest = std::max(largest, c.local_force[0]);
-  for (const auto& c : state.contacts) {
-    if (!(c.local_force[0] > 1e-9 * largest)) continue;
-    if (c.obstacle == 0) {
-      ++ledge_contacts;
-      ledge_push += c.force.dot(kAlong);
-    } else {
-      ++floor_contacts;
-    }
-  }
+  std::vector<sh::FrictionalContact> on_ledge, on_floor;
+  for (const auto& c : state.contacts) (c.obstacle == 0 ? on_ledge : on_floor).push_back(c);
+  const std::size_t ledge_contacts = friction_law(on_ledge, 0.0).loaded;
+  const std::size_t floor_contacts = friction_law(on_floor, 0.0).loaded;
   if (ledge_contacts == 0 || floor_contacts == 0)
     throw SolverError("superhelix frictional statics", "the rod does not lie on both the ledge and the floor",
                       state.iterations, state.residual);
+  double ledge_push = 0.0;
+  for (const auto& c : on_ledge) ledge_push += c.force.dot(kAlong);
   const double weight_height = k.w * k.h;
   LevelOutput out;
   out.metrics["ledge_push"] = error_sample(ledge_push / weight_height, 1.0);
@@ -220,7 +214,8 @@ void add_hanging_fold(Registry& registry) {
        make_parameter("rounding", 0.3, 0.0, 1e6, true, false, "length", "the edge's rounding radius (centreline)"),
        make_parameter("ledge_length", 0.8, 0.0, 1e6, true, false, "length", "laid length on the ledge"),
        make_parameter("floor_length", 0.45, 0.0, 1e6, true, false, "length", "laid length on the floor")},
-      element_levels("number of elements", {32, 64, 128}, {32, 64, 128, 256, 512}), std::move(metrics), std::move(gates),
+      element_levels("number of elements", {32, 64, 128}, {32, 64, 128, 256, 512}), std::move(metrics),
+      std::move(gates),
       run);
   // Windows, measured 2026-11-29 at the default levels (the nose's rounding / h; the coarsest element against the
   // rod's gravity length l_g = (B / w)^(1/3) and the rounding; the flat parts against l_g): rounding / h 0.4 .. 1.2
@@ -231,7 +226,8 @@ void add_hanging_fold(Registry& registry) {
   const auto gravity_length = [](const Parameters& p) {
     return std::cbrt(parameter_value(p, "B") / (parameter_value(p, "rhoS") * parameter_value(p, "g")));
   };
-  require(c, ratio_window("rounding", "h", 0.4, 1.2, "the nose wrapped by the rod and the laid rod reaching the floor"));
+  require(c,
+          ratio_window("rounding", "h", 0.4, 1.2, "the nose wrapped by the rod and the laid rod reaching the floor"));
   require_window(c, "the coarsest element (N = 32) at most 1.15 (B / w)^(1/3) and 0.232 rounding",
                  [gravity_length](const Parameters& p) {
                    const Fold k = fold_of(p);
@@ -248,7 +244,7 @@ void add_hanging_fold(Registry& registry) {
                                                       " (the coarsest element, L / 32, at most 0.232 of it: the nose "
                                                       "resolved)");
                  });
-  require_window(c, "the flat parts at least 1.8 (step) and 1.5 (floor) (B / w)^(1/3) long", [gravity_length](const Parameters& p) {
+  const auto flat_parts = [gravity_length](const Parameters& p) {
     const Fold k = fold_of(p);
     const double l_g = gravity_length(p), flat = k.ledge - kClampRun * k.h - k.rounding;
     if (!(flat >= 1.8 * l_g))
@@ -259,7 +255,8 @@ void add_hanging_fold(Registry& registry) {
       throw InputError("floor_length", "invalid parameters: floor_length = " + format_value(k.floor) +
                                            " must be at least 1.5 (B / w)^(1/3) = " + format_value(1.5 * l_g) +
                                            " (the rod lies flat on the floor)");
-  });
+  };
+  require_window(c, "the flat parts at least 1.8 (step) and 1.5 (floor) (B / w)^(1/3) long", flat_parts);
   registry.add(std::move(c));
 }
 
