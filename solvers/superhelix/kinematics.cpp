@@ -1,5 +1,6 @@
 #include "rodvv/solvers/superhelix/kinematics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -117,6 +118,13 @@ std::vector<Vec3> Kinematics::point_velocities(const VecX& qdot) const {
     omega += theta_end_[e] * rate;
   }
   return velocities;
+}
+
+double largest_point_motion(const Kinematics& from, const Kinematics& to) {
+  double largest = 0.0;
+  for (std::size_t g = 0; g < from.points().size(); ++g)
+    largest = std::max(largest, (to.points()[g].position - from.points()[g].position).norm());
+  return largest;
 }
 
 }  // namespace rodvv::solvers::superhelix

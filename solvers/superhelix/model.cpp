@@ -52,10 +52,8 @@ void validate(const RodModel& model) {
   require_finite_vector("end_force", model.end_force);
   require_finite_vector("end_moment", model.end_moment);
   require_rotation("root_frame", model.root_frame);
-  if (model.self_contact.radius != 0.0 || model.self_contact.stiffness != 0.0) {
-    require_positive("self_contact.radius", model.self_contact.radius);
-    require_positive("self_contact.stiffness", model.self_contact.stiffness);
-  }
+  if (model.self_contact.radius != 0.0 || model.self_contact.stiffness != 0.0 || is_hard(model.self_contact))
+    validate_self_contact(model.self_contact, "self_contact.");
   if (model.tip_guide.stiffness != 0.0 || model.tip_guide.rotational_stiffness != 0.0) {
     require_positive("tip_guide.stiffness", model.tip_guide.stiffness);
     require_positive("tip_guide.rotational_stiffness", model.tip_guide.rotational_stiffness);
@@ -71,6 +69,17 @@ void validate(const RodModel& model) {
                                        "point (" + std::to_string(model.elements * model.gauss_points) + "), got " +
                                            std::to_string(model.point_forces.size()));
     for (const auto& f : model.point_forces) require_finite_vector("point_forces", f);
+  }
+}
+
+void validate_self_contact(const SelfContact& contact, const std::string& prefix) {
+  require_positive(prefix + "radius", contact.radius);
+  if (!is_hard(contact)) {
+    require_positive(prefix + "stiffness", contact.stiffness);
+  } else if (contact.stiffness != 0.0) {
+    const std::string name = prefix + "stiffness";
+    throw InputError(name, "invalid parameter '" + name + "' = " + format_value(contact.stiffness) +
+                               ": must be 0 with the hard contact law (it has no barrier)");
   }
 }
 

@@ -13,7 +13,10 @@
 #include "rodvv/common/validation.hpp"
 #include "rodvv/solvers/contact/cubic_barrier.hpp"
 #include "rodvv/solvers/contact/segment_proximity.hpp"
+#include "rodvv/solvers/superhelix/arc_pair_contact.hpp"
 #include "rodvv/solvers/superhelix/load_stiffness.hpp"
+
+#include "arc_point.hpp"
 
 namespace rodvv::solvers::superhelix {
 
@@ -24,19 +27,17 @@ constexpr std::size_t kMaxChordsPerElement = 32;
 constexpr int kMaxNewtonIterations = 60;
 constexpr double kStepRoundOff = 4.0 * std::numeric_limits<double>::epsilon();
 
-// Position, tangent n0 and its derivative R (q x e0) of element e at offset sigma.
-struct ArcPoint {
-  Vec3 r, tangent, tangent_rate;
-};
-ArcPoint arc_point(const Kinematics& kinematics, std::size_t e, double sigma) {
-  const Mat3 R = kinematics.frame(e, sigma);
-  const Vec3 q = kinematics.q().segment<3>(3 * static_cast<Eigen::Index>(e));
-  return {kinematics.position(e, sigma), R.col(0), R * q.cross(Vec3::UnitX())};
-}
+using detail::arc_point;
+using detail::ArcPoint;
 
 double curvature(const Kinematics& kinematics, std::size_t e) {
   const auto i = static_cast<Eigen::Index>(3 * e);
   return std::hypot(kinematics.q()(i + 1), kinematics.q()(i + 2));
+}
+
+// The barrier of the law; the hard law has none (stiffness 0: no energy, force or force rate).
+contact::CubicBarrier barrier_of(const SelfContact& contact) {
+  return {contact.radius, is_hard(contact) ? 0.0 : contact.stiffness};
 }
 
 // The chord polyline (c chords per element) and its sagitta bound delta.
@@ -91,7 +92,7 @@ std::optional<ArcFoot> foot_in_contact(const Kinematics& kinematics, const SelfC
 void add_contacts(const Kinematics& kinematics, const SelfContact& contact, const ChordPolyline& polyline,
                   const std::vector<double>& weights, std::size_t point_element, std::size_t foot_element,
                   std::vector<ArcContact>& contacts) {
-  const contact::CubicBarrier law{contact.radius, contact.stiffness};
+  const contact::CubicBarrier law = barrier_of(contact);
   const double ell = kinematics.element_length();
   const std::size_t per = kinematics.points_per_element(), c = polyline.chords_per_element;
   for (std::size_t g = 0; g < per; ++g) {
@@ -146,10 +147,7 @@ std::vector<ArcContact> resolve(const Kinematics& kinematics, const SelfContact&
 
 }  // namespace
 
-void validate(const SelfContact& contact) {
-  require_positive("radius", contact.radius);
-  require_positive("stiffness", contact.stiffness);
-}
+void validate(const SelfContact& contact) { validate_self_contact(contact, ""); }
 
 std::size_t contact_excluded_elements(double radius, double element_length) {
   require_positive("radius", radius);
@@ -208,15 +206,29 @@ ArcFoot foot_on_arc(const Kinematics& kinematics, const Vec3& point, std::size_t
 
 std::vector<ArcContact> self_contacts(const Kinematics& kinematics, const SelfContact& contact) {
   validate(contact);
+  const double reach = 2.0 * contact.radius;
+  if (is_hard(contact)) return closest_arc_pairs(kinematics, contact, reach);
+  return resolve(kinematics, contact, chord_polyline(kinematics, contact.radius),
+                 contact_element_pairs(kinematics, contact, reach));
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> contact_element_pairs(const Kinematics& kinematics,
+                                                                       const SelfContact& contact, double reach) {
+  validate(contact);
+  if (!(reach >= 2.0 * contact.radius && reach < std::numeric_limits<double>::infinity()))
+    throw InputError("reach", "invalid parameter 'reach' = " + format_value(reach) +
+                                  ": must be finite and at least the contact distance 2h = " +
+                                  format_value(2.0 * contact.radius));
   const std::size_t excluded = contact_excluded_elements(contact.radius, kinematics.element_length());
   const ChordPolyline polyline = chord_polyline(kinematics, contact.radius);
   const std::size_t c = polyline.chords_per_element;
   // Chords of elements more than `excluded` apart are more than excluded * c chords apart.
   Candidates candidates;
-  for (const auto& near : contact::segments_within(polyline.vertices, 2.0 * contact.radius + 2.0 * polyline.sagitta,
-                                                   excluded * c))
+  for (const auto& near : contact::segments_within(polyline.vertices, reach + 2.0 * polyline.sagitta, excluded * c))
     if (near.second / c - near.first / c > excluded) candidates.emplace_back(near.first / c, near.second / c);
-  return resolve(kinematics, contact, polyline, std::move(candidates));
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  return candidates;
 }
 
 std::vector<ArcContact> self_contacts_all_pairs(const Kinematics& kinematics, const SelfContact& contact) {
@@ -230,7 +242,7 @@ std::vector<ArcContact> self_contacts_all_pairs(const Kinematics& kinematics, co
 }
 
 double self_contact_energy(const SelfContact& contact, const std::vector<ArcContact>& contacts) {
-  const contact::CubicBarrier law{contact.radius, contact.stiffness};
+  const contact::CubicBarrier law = barrier_of(contact);
   double energy = 0.0;
   for (const auto& pair : contacts) energy += pair.weight * law.energy(pair.distance);
   return energy;
@@ -247,7 +259,8 @@ VecX self_contact_generalized_force(const Kinematics& kinematics, const std::vec
 
 double contact_field(const Kinematics& kinematics, const SelfContact& contact, std::size_t element, double sigma) {
   validate(contact);
-  const contact::CubicBarrier law{contact.radius, contact.stiffness};
+  if (is_hard(contact)) return 0.0;  // no barrier, no field: the forces act through n(s) alone
+  const contact::CubicBarrier law = barrier_of(contact);
   const std::size_t n = kinematics.elements();
   const double ell = kinematics.element_length();
   const std::size_t excluded = contact_excluded_elements(contact.radius, ell);
@@ -274,7 +287,7 @@ double contact_field(const Kinematics& kinematics, const SelfContact& contact, s
 
 MatX self_contact_hessian(const Kinematics& kinematics, const SelfContact& contact,
                           const std::vector<ArcContact>& contacts) {
-  const contact::CubicBarrier law{contact.radius, contact.stiffness};
+  const contact::CubicBarrier law = barrier_of(contact);
   const double ell = kinematics.element_length();
   const auto size = 3 * static_cast<Eigen::Index>(kinematics.elements());
   // Every term but the held loads' is a weighted outer product u w u^T of a vector u = J^T v (J: 3 x 3N):

@@ -1,5 +1,6 @@
 #include "rodvv/solvers/superhelix/solution.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "rodvv/common/errors.hpp"
@@ -9,7 +10,11 @@
 
 namespace rodvv::solvers::superhelix {
 
-SpatialRodSolution make_solution(const RodModel& model, const VecX& q, std::string method) {
+namespace {
+
+// hard_contacts: the hard law's contacts with their multipliers (nullptr: the barrier's, found here).
+SpatialRodSolution solution_of(const RodModel& model, const VecX& q, const std::vector<ArcContact>* hard_contacts,
+                               std::string method) {
   validate(model);
   const Kinematics kinematics(model, q);
   const std::size_t n = model.elements;
@@ -26,12 +31,12 @@ SpatialRodSolution make_solution(const RodModel& model, const VecX& q, std::stri
     const auto& point = kinematics.points()[g];
     contact_forces.push_back({static_cast<double>(point.element) * ell + point.sigma, model.point_forces[g]});
   }
-  const bool contact = model.self_contact.radius > 0.0;
-  if (contact)
-    for (const auto& pair : self_contacts(kinematics, model.self_contact)) {
-      contact_forces.push_back({static_cast<double>(pair.first) * ell + pair.s, pair.force * pair.normal});
-      contact_forces.push_back({static_cast<double>(pair.second) * ell + pair.t, -pair.force * pair.normal});
-    }
+  const bool barrier = model.self_contact.radius > 0.0 && !hard_contacts;
+  for (const auto& pair : barrier ? self_contacts(kinematics, model.self_contact)
+                                  : hard_contacts ? *hard_contacts : std::vector<ArcContact>{}) {
+    contact_forces.push_back({static_cast<double>(pair.first) * ell + pair.s, pair.force * pair.normal});
+    contact_forces.push_back({static_cast<double>(pair.second) * ell + pair.t, -pair.force * pair.normal});
+  }
   SpatialRodSolution solution;
   solution.method = std::move(method);
   solution.length = model.length;
@@ -43,7 +48,7 @@ SpatialRodSolution make_solution(const RodModel& model, const VecX& q, std::stri
     append_station(solution, model, s, r, R, u, u_hat);
     for (const auto& f : contact_forces)  // a force at the station itself counts half
       solution.force_n.back() += (f.s > s ? 1.0 : f.s == s ? 0.5 : 0.0) * f.force;
-    if (contact) solution.potential.back() += contact_field(kinematics, model.self_contact, e, 0.5 * ell);
+    if (barrier) solution.potential.back() += contact_field(kinematics, model.self_contact, e, 0.5 * ell);
   }
   // A sliding clamp's reaction at the tip is carried by every section, as the end force is.
   if (has_tip_guide(model)) {
@@ -52,6 +57,28 @@ SpatialRodSolution make_solution(const RodModel& model, const VecX& q, std::stri
   }
   append_vertices(solution, kinematics, n, ell);
   return solution;
+}
+
+}  // namespace
+
+SpatialRodSolution make_solution(const RodModel& model, const VecX& q, std::string method) {
+  if (is_hard(model.self_contact))
+    throw InputError("self_contact.law", "invalid parameter 'self_contact.law': with hard self-contact the contact "
+                                         "forces are the statics' multipliers; pass them to make_solution");
+  return solution_of(model, q, nullptr, std::move(method));
+}
+
+SpatialRodSolution make_solution(const RodModel& model, const VecX& q, const std::vector<ArcContact>& contacts,
+                                 std::string method) {
+  if (!(model.self_contact.radius > 0.0 && is_hard(model.self_contact)))
+    throw InputError("self_contact.law", "invalid parameter 'self_contact.law': contact forces are given only with "
+                                         "hard self-contact (the barrier's follow from q)");
+  const std::size_t n = model.elements;
+  for (const auto& c : contacts)
+    if (!(c.first < n && c.second < n && c.force >= 0.0 && std::isfinite(c.force) && c.normal.allFinite()))
+      throw InputError("contacts", "invalid parameter 'contacts': each needs elements below " + std::to_string(n) +
+                                       ", a finite force >= 0 and a finite normal");
+  return solution_of(model, q, &contacts, std::move(method));
 }
 
 void append_station(SpatialRodSolution& solution, const RodModel& model, double s, const Vec3& r, const Mat3& R,

@@ -23,13 +23,14 @@ namespace rodvv::solvers::superhelix {
 
 namespace {
 
-// A configuration with what every static quantity needs from it: its kinematics and, with
-// self-contact, its contacts (found once, shared by the residual, the potential and the Jacobian).
+bool has_barrier(const RodModel& model) { return model.self_contact.radius > 0.0 && !is_hard(model.self_contact); }
+
+// A configuration with what every static quantity needs from it: its kinematics and, with a contact
+// barrier, its contacts (found once, shared by the residual, the potential and the Jacobian).
 struct Configuration {
   Configuration(const RodModel& model, Kinematics at)
       : kinematics(std::move(at)),
-        contacts(model.self_contact.radius > 0.0 ? self_contacts(kinematics, model.self_contact)
-                                                 : std::vector<ArcContact>{}) {}
+        contacts(has_barrier(model) ? self_contacts(kinematics, model.self_contact) : std::vector<ArcContact>{}) {}
   Configuration(const RodModel& model, const VecX& q) : Configuration(model, Kinematics(model, q)) {}
   Kinematics kinematics;
   std::vector<ArcContact> contacts;
@@ -40,7 +41,7 @@ VecX residual_of(const RodModel& model, const Configuration& at, double load_fac
   VecX r = generalised_stiffness(model).cwiseProduct(q - natural_strain_vector(model)) -
            external_generalised_force(model, at.kinematics, load_factor);
   // Self-contact is a constraint, not a load: never scaled by the load factor.
-  if (model.self_contact.radius > 0.0) r -= self_contact_generalized_force(at.kinematics, at.contacts);
+  if (has_barrier(model)) r -= self_contact_generalized_force(at.kinematics, at.contacts);
   // The sliding clamp is a support, not a load: never scaled either.
   if (has_tip_guide(model)) r += tip_guide_gradient(model.tip_guide, at.kinematics);
   return r;
@@ -50,7 +51,7 @@ MatX jacobian_of(const RodModel& model, const Configuration& at, double load_fac
   MatX J = load_stiffness(model, at.kinematics, load_factor);  // in place: one n x n buffer, not two
   J *= -1.0;
   J.diagonal() += generalised_stiffness(model);
-  if (model.self_contact.radius > 0.0) J += self_contact_hessian(at.kinematics, model.self_contact, at.contacts);
+  if (has_barrier(model)) J += self_contact_hessian(at.kinematics, model.self_contact, at.contacts);
   if (has_tip_guide(model)) J += tip_guide_hessian(model.tip_guide, at.kinematics);
   return J;
 }
@@ -60,7 +61,7 @@ double potential_of(const RodModel& model, const Configuration& at, double load_
   const Kinematics& kinematics = at.kinematics;
   double potential = elastic_energy(model, kinematics.q()) +
                      load_factor * (gravity_energy(model, kinematics) - model.end_force.dot(kinematics.tip_position()));
-  if (model.self_contact.radius > 0.0) potential += self_contact_energy(model.self_contact, at.contacts);
+  if (has_barrier(model)) potential += self_contact_energy(model.self_contact, at.contacts);
   if (has_tip_guide(model)) potential += tip_guide_energy(model.tip_guide, kinematics);
   return potential;
 }
@@ -88,14 +89,6 @@ double static_potential(const RodModel& model, const VecX& q, double load_factor
 }
 
 namespace {
-
-// The largest displacement of a Gauss point between two configurations.
-double largest_point_motion(const Kinematics& from, const Kinematics& to) {
-  double largest = 0.0;
-  for (std::size_t g = 0; g < from.points().size(); ++g)
-    largest = std::max(largest, (to.points()[g].position - from.points()[g].position).norm());
-  return largest;
-}
 
 // Statics with self-contact: the equilibrium minimises the potential, so Newton is globalised on it
 // (see the header).
@@ -181,13 +174,23 @@ StaticResult minimise_potential(const RodModel& model, const StaticOptions& opti
 
 }  // namespace
 
-StaticResult solve_static(const RodModel& model, const StaticOptions& options) {
-  validate(model);
-  const VecX q0 = natural_strain_vector(model);
+NewtonScales static_newton_scales(const RodModel& model) {
   NewtonScales scales;
   scales.stiffness_max = generalised_stiffness(model).lpNorm<Eigen::Infinity>();
   scales.length = model.length;
-  scales.load_scale = external_generalised_force(model, Kinematics(model, q0), 1.0).lpNorm<Eigen::Infinity>();
+  scales.load_scale = external_generalised_force(model, Kinematics(model, natural_strain_vector(model)), 1.0)
+                          .lpNorm<Eigen::Infinity>();
+  return scales;
+}
+
+StaticResult solve_static(const RodModel& model, const StaticOptions& options) {
+  validate(model);
+  const VecX q0 = natural_strain_vector(model);
+  const NewtonScales scales = static_newton_scales(model);
+  if (is_hard(model.self_contact))
+    throw InputError("self_contact.law", "invalid parameter 'self_contact.law': hard self-contact has its forces as "
+                                         "unknowns; solve it with solve_static_with_hard_contact "
+                                         "(hard_self_contact.hpp)");
   if (model.self_contact.radius > 0.0) return minimise_potential(model, options, scales);
   const StaticResidual residual = [&model](const VecX& x, double lambda) {
     return static_residual(model, x, lambda);

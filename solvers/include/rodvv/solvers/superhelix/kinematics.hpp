@@ -75,4 +75,8 @@ class Kinematics {
   std::size_t per_element_ = 0;
 };
 
+// The largest displacement of a Gauss point between two configurations of the same rod: the step
+// control of the statics with self-contact (statics.hpp, hard_self_contact.hpp).
+double largest_point_motion(const Kinematics& from, const Kinematics& to);
+
 }  // namespace rodvv::solvers::superhelix

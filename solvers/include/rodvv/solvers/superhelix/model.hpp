@@ -26,17 +26,25 @@
 // a wrong-sized per-element natural strain or point-force list, fewer than 1 or more than 8 Gauss
 // points.
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "rodvv/common/eigen_types.hpp"
 
 namespace rodvv::solvers::superhelix {
 
-// Frictionless self-contact through the cubic barrier (self_contact.hpp; statics only).
+// Frictionless self-contact (self_contact.hpp; statics only): through the cubic barrier, or hard (the
+// constraint d >= 2h at the Gauss points, its forces the multipliers of a complementarity problem:
+// hard_self_contact.hpp).
+enum class ContactLaw { Barrier, Hard };
+
 struct SelfContact {
   double radius = 0.0;     // h > 0: contact when two arcs are closer than 2h (0 in a model: none)
-  double stiffness = 0.0;  // k > 0, force / length^3: the cubic barrier's, per unit length of rod
+  double stiffness = 0.0;  // barrier: k > 0, force / length^3, the cubic barrier's per unit length of rod; hard: 0
+  ContactLaw law = ContactLaw::Barrier;
 };
+
+inline bool is_hard(const SelfContact& contact) { return contact.law == ContactLaw::Hard; }
 
 // A sliding clamp at the tip (tip_guide.hpp; statics only): the tip slides along the line through `point`
 // along frame.col(0), its frame held at `frame`, by springs of stiffness k (off the axis) and k_r (turning).
@@ -71,6 +79,8 @@ struct RodModel {
 };
 
 void validate(const RodModel& model);
+// InputError naming prefix + "radius" unless > 0, prefix + "stiffness" unless > 0 (barrier) or 0 (hard).
+void validate_self_contact(const SelfContact& contact, const std::string& prefix);
 // InputError "point_forces", "self_contact" or "tip_guide" naming `what` (the dynamics, the total energy,
 // the super-clothoid, inverse statics), which do not take these statics-only loads.
 void require_statics_only_loads_absent(const RodModel& model, const char* what);

@@ -38,12 +38,16 @@
 // the element's tangent n0 and its rate R (q x e0)), started at the element's chord vertex nearest to
 // the point.
 //
+// Hard law: the constraint d >= 2h between the closest points of two arcs (arc_pair_contact.hpp,
+// hard_self_contact.hpp); the barrier's energy, force and field are then 0.
+//
 // Generalised force and Hessian. At a foot t* the distance's gradient is n . (dr_P/dq(s) - dr_Q/dq(t*))
 // (envelope theorem), n the unit vector from the foot to the point; a contact's generalised force is
 // its force times that. The Hessian (self_contact_hessian) adds the normal's rotation, the dead-load
 // stiffness of the held forces and the foot's motion (implicit function theorem on f'(t*) = 0).
 // Both are checked against central differences in the tests.
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "rodvv/common/eigen_types.hpp"
@@ -81,8 +85,14 @@ struct ArcContact {
 };
 
 // The contacts, sorted by (first, s, second), by the broad phase above. SolverError when a point
-// lies on another stretch's centreline (d = 0: no normal).
+// lies on another stretch's centreline (d = 0: no normal). With the hard law (model.hpp) the pairs
+// of closest points of two arcs closer than 2h instead (arc_pair_contact.hpp), force 0: the forces are
+// the complementarity's unknowns (hard_self_contact.hpp).
 std::vector<ArcContact> self_contacts(const Kinematics& kinematics, const SelfContact& contact);
+// The broad phase alone: the element pairs (P < Q, more than m apart, sorted) whose arcs may come closer
+// than `reach` (finite, >= 2h; InputError "reach" otherwise).
+std::vector<std::pair<std::size_t, std::size_t>> contact_element_pairs(const Kinematics& kinematics,
+                                                                       const SelfContact& contact, double reach);
 // The same from every pair of elements (O(N^2) pairs): the oracle of the broad phase's tests.
 std::vector<ArcContact> self_contacts_all_pairs(const Kinematics& kinematics, const SelfContact& contact);
 
@@ -99,7 +109,7 @@ VecX self_contact_generalized_force(const Kinematics& kinematics, const std::vec
 // reactions are normal to the rod at s (n is perpendicular to the tangent at a foot); the own pull's
 // tangential part is -1/2 psi'(d) n . t = -d/ds (1/2 psi(d(s))). So dH/ds = -f_c . t (PHYSICS.md
 // §1.2) integrates to H - 1/2 sum psi(d(s)) = const. (A symmetric pair potential U gives the full
-// field int U dsigma instead: the nodal rod's.)
+// field int U dsigma instead: the nodal rod's.) The hard law has no field: 0.
 double contact_field(const Kinematics& kinematics, const SelfContact& contact, std::size_t element, double sigma);
 
 // The energy's Hessian d2E/dq2 (3N square, symmetric) at a fixed contact set: with J = dr_P/dq(s) -

@@ -11,14 +11,21 @@
 //   vertices: the N + 1 element ends.
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "rodvv/common/eigen_types.hpp"
 #include "rodvv/common/spatial_rod.hpp"
 #include "rodvv/solvers/superhelix/model.hpp"
+#include "rodvv/solvers/superhelix/self_contact.hpp"
 
 namespace rodvv::solvers::superhelix {
 
 SpatialRodSolution make_solution(const RodModel& model, const VecX& q, std::string method = "super-helix");
+// With hard self-contact (hard_self_contact.hpp) the forces are the statics' multipliers: `contacts` (its
+// HardContactStatics::contacts) enter n(s) the same way, and there is no contact field. make_solution without
+// them refuses a model with hard self-contact (InputError "self_contact.law"), and this one any other model.
+SpatialRodSolution make_solution(const RodModel& model, const VecX& q, const std::vector<ArcContact>& contacts,
+                                 std::string method = "super-helix");
 
 // Shared by make_solution and make_clothoid_solution (clothoid_solution.hpp).
 // One station of an inextensible, unshearable rod under the model's dead loads: pose (r, R), strain

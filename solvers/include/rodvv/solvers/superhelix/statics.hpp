@@ -21,6 +21,10 @@
 // energy only after a relative motion of about 4h; 3h leaves them overlapping by h or more, a barrier
 // energy the line search rejects. Same convergence test as Newton.
 //
+// Hard self-contact (model.self_contact.law = Hard): the residual, potential and Jacobian here are the
+// rod's without the contacts, whose forces are unknowns (hard_self_contact.hpp solves for both);
+// solve_static refuses such a model (InputError "self_contact.law").
+//
 // A sliding clamp at the tip (model.tip_guide, tip_guide.hpp): r gains the gradient of its springs'
 // energy (never scaled by the load factor), the Jacobian their Hessian, the potential their energy.
 //
@@ -48,5 +52,7 @@ VecX static_residual(const RodModel& model, const VecX& q, double load_factor = 
 double static_potential(const RodModel& model, const VecX& q, double load_factor = 1.0);
 MatX static_jacobian(const RodModel& model, const VecX& q, double load_factor = 1.0);
 StaticResult solve_static(const RodModel& model, const StaticOptions& options = {});
+// The convergence test's scales (|K|_inf, L, |F_ext(q0)|_inf at full load; newton.hpp) of a validated model.
+NewtonScales static_newton_scales(const RodModel& model);
 
 }  // namespace rodvv::solvers::superhelix
