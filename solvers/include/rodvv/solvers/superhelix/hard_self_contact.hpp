@@ -15,17 +15,20 @@
 // without it Newton is only linear) + rho sum_{lambda_c > 0} G_c^T G_c (an augmentation that does not
 // move the solution - a step keeping those contacts closed has G_c dq = 0 - but makes A positive definite
 // where the elastic stiffness alone is not: a knot is held together by its contacts) + mu K (a Levenberg
-// shift, 0 unless A is indefinite or a step fails; it adds pseudo-time mass and does not move the fixed
-// point either). With dq = dq_free + X lambda (dq_free = -A^-1 r, X = A^-1 G^T) the LCP
+// shift, below; it adds pseudo-time mass and does not move the fixed point either). With dq = dq_free + X lambda (dq_free = -A^-1 r, X = A^-1 G^T) the LCP
 //     0 <= lambda  _|_  W lambda + b >= 0,   W = G X (symmetrised),  b = g + G dq_free,
 // is solved by Lemke's method (contact/lcp.hpp, verified). lambda is the total contact force, not an
 // increment: at a fixed point dq = 0, r = G^T lambda and lambda _|_ g.
 //
-// Globalisation: a step is cut to move no Gauss point by more than h / 2, and accepted when the
-// equilibrium measure (below) falls (Armijo 1e-4 on it) against the larger of its value here and its
-// value here under the step's own forces (those change discontinuously with the active set); a trial
-// with a candidate closer than h (a strand pushed through another) is a step too long. A failed LCP or
-// line search raises the shift mu (1e-6, x 10 up to 1e12), a full accepted step lowers it (/ 10).
+// Globalisation: pseudo-transient continuation (Kelley & Keyes 1998), the shift mu being the inverse
+// pseudo-time step (as on the nodal rod). A step is cut to move no Gauss point by more than h / 2 and
+// taken whole when the equilibrium measure (below) stays within 10 x the larger of its value here and its
+// value here under the step's own forces (those change discontinuously with the active set); a trial with
+// a candidate closer than h (a strand pushed through another) is a step too long. A step that lowered the
+// measure and was not cut divides mu by the measure's ratio (clamped to [1.2, 10]; below 1e-6 mu is 0:
+// Newton itself), a cut one multiplies it by the cut (at most 10 x), a failed step or LCP by 4 (from 1e-6,
+// up to 1e12: then SolverError). A backtracking line search on the measure (Armijo 1e-4), tried first,
+// crawled at steps of 1e-8 on the trefoil: the measure is a max norm of forces that jump.
 //
 // Equilibrium measure: max(|r - G^T lambda|_inf / S, max_c |min(lambda_c / F, g_c / L)|) with S the
 // Newton residual scale (newton.hpp) and F = max(|F_end|, rho S |g| L, max(EI1, EI2, GJ) / L^2) a force
