@@ -97,14 +97,19 @@ Vec2 closest_points(const Kinematics& kinematics, std::size_t P, std::size_t Q, 
 
 }  // namespace
 
-std::vector<ArcContact> closest_arc_pairs(const Kinematics& kinematics, const SelfContact& contact, double reach) {
+std::vector<ArcContact> closest_arc_pairs(const Kinematics& kinematics, const SelfContact& contact, double reach,
+                                          const std::vector<ArcContact>& previous) {
   const double ell = kinematics.element_length();
   std::vector<ArcContact> contacts;
+  auto known = previous.begin();
   for (const auto& [P, Q] : contact_element_pairs(kinematics, contact, reach)) {
-    // The start: the nearest pair of 5 evenly spaced points on each arc.
-    Vec2 start(0.0, 0.0);
+    // The start: the pair's closest points in `previous` (sorted like the pairs), so that an iteration
+    // follows the same minimum; else the nearest pair of 5 evenly spaced points on each arc.
+    while (known != previous.end() && std::make_pair(known->first, known->second) < std::make_pair(P, Q)) ++known;
+    const bool seeded = known != previous.end() && known->first == P && known->second == Q;
+    Vec2 start = seeded ? Vec2(known->s, known->t) : Vec2(0.0, 0.0);
     double nearest = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i <= kSeedsPerElement; ++i)
+    for (std::size_t i = 0; i <= kSeedsPerElement && !seeded; ++i)
       for (std::size_t j = 0; j <= kSeedsPerElement; ++j) {
         const double s = ell * static_cast<double>(i) / kSeedsPerElement, t = ell * static_cast<double>(j) / kSeedsPerElement;
         const double distance = (kinematics.position(P, s) - kinematics.position(Q, t)).squaredNorm();

@@ -36,7 +36,7 @@ constexpr double kLcpAccuracy = 1e-9;
 // pair carries in `forces` (also sorted), 0 if absent.
 std::vector<ArcContact> candidates_with_forces(const Kinematics& kinematics, const SelfContact& contact,
                                                const std::vector<ArcContact>& forces) {
-  auto candidates = closest_arc_pairs(kinematics, contact, 3.0 * contact.radius);
+  auto candidates = closest_arc_pairs(kinematics, contact, 3.0 * contact.radius, forces);
   const auto key = [](const ArcContact& c) { return std::make_pair(c.first, c.second); };
   auto known = forces.begin();
   for (auto& candidate : candidates) {

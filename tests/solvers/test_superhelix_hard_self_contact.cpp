@@ -109,8 +109,8 @@ TEST(SuperHelixHardSelfContact, HoldsTheTurnsOfAnOverlappingSpringAtTheContactDi
         EXPECT_NEAR(c.distance, 0.06, kTolerance * kLength) << c.first << " " << c.s;
       }
     }
-    // Measured: 4 closest-point pairs carry the spring's turns apart at N = 24 and 48 (21, 65 iterations):
-    // a hard contact holds the coil at points, with the turns free between them.
+    // Measured: 4 closest-point pairs carry the spring's turns apart at N = 24 and 48: a hard contact holds
+    // the coil at points, with the turns free between them.
     EXPECT_GE(loaded, 2u) << n;
     // The equilibrium with the gradients of the distances by differences: 1e-7 of the residual's scale
     // (the differences' truncation, h^2 |d'''| ~ 1e-12 relative, times the forces).

@@ -37,7 +37,9 @@ namespace rodvv::solvers::superhelix {
 // The closest-point pairs of the arcs closer than `reach` (finite, >= 2h), sorted by (first, second):
 // first = P, s = s*, second = Q, t = t*, p and q the two points, normal from q to p, force 0, weight 0.
 // SolverError when two centrelines intersect (d = 0: no normal).
-std::vector<ArcContact> closest_arc_pairs(const Kinematics& kinematics, const SelfContact& contact, double reach);
+// previous: closest points found before (sorted by pair), whose (s, t) start the search of their pair.
+std::vector<ArcContact> closest_arc_pairs(const Kinematics& kinematics, const SelfContact& contact, double reach,
+                                          const std::vector<ArcContact>& previous = {});
 
 // -sum_c f_c d2d*_c/dq2 (3N square, symmetric): the stiffness of the contacts' forces f_c (held) as the
 // pairs turn and their closest points slide, i.e. the Hessian of the contact term of the hard law's
