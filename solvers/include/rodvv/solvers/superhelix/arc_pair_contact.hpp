@@ -4,7 +4,9 @@
 // (self_contact.hpp: contact_element_pairs), the local minimum (s*, t*) in [0, ell]^2 of
 //     D(s, t) = 1/2 |r_P(s) - r_Q(t)|^2
 // by projected Newton in two variables (exact derivatives from the tangents and their rates), started at
-// the nearest of 5 x 5 points of the two arcs. Every pair's minimum over its box counts, at an element end
+// the pair's closest points of a previous configuration when given (an iteration then follows one
+// minimum; shallow minima of side-by-side strands otherwise jump between basins), else at the nearest of
+// 5 x 5 points of the two arcs. Every pair's minimum over its box counts, at an element end
 // too: d_PQ(q) = min over the box is continuous in q, and the tube does not pass through itself iff every
 // d_PQ >= 2h. (Keeping only minima of the whole curves - interior ones - was tried first: where strands
 // run side by side in the trefoil's braid, the shallow minima wander across element junctions, so the
