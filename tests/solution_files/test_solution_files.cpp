@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <Eigen/Geometry>
 
 #include "rodvv/common/errors.hpp"
@@ -336,7 +338,10 @@ TEST(SolutionFile, MalformedFilesNameWhereAndWhat) {
 
 class CsvNodes : public ::testing::Test {
  protected:
-  std::filesystem::path directory = std::filesystem::temp_directory_path() / "rodvv_test_csv_nodes";
+  // One directory per process: CTest runs this fixture's tests side by side (-j), and a shared directory
+  // let one test's TearDown delete the other's files mid-read (seen in CI).
+  std::filesystem::path directory =
+      std::filesystem::temp_directory_path() / ("rodvv_test_csv_nodes-" + std::to_string(::getpid()));
   void SetUp() override { std::filesystem::create_directories(directory); }
   void TearDown() override { std::filesystem::remove_all(directory); }
   SolutionFile read_with_csv(const std::string& csv) {
