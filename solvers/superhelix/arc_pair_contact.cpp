@@ -11,6 +11,7 @@
 #include "rodvv/solvers/superhelix/load_stiffness.hpp"
 
 #include "arc_point.hpp"
+#include "signed_outer_products.hpp"
 
 namespace rodvv::solvers::superhelix {
 
@@ -143,13 +144,9 @@ MatX closest_pair_force_stiffness(const Kinematics& kinematics, const std::vecto
   const double ell = kinematics.element_length();
   const std::size_t n = kinematics.elements();
   const auto size = 3 * static_cast<Eigen::Index>(n);
-  // As in self_contact_hessian: the outer-product terms gathered as columns sqrt(|w|) u, added by two
-  // symmetric rank-k updates; the held loads' dead-load stiffness by point_load_jacobian.
-  std::vector<VecX> positive, negative;
-  const auto gather = [&](VecX u, double w) {
-    if (w > 0.0) positive.push_back(std::sqrt(w) * u);
-    if (w < 0.0) negative.push_back(std::sqrt(-w) * u);
-  };
+  // As in self_contact_hessian: the outer-product terms summed by signed_outer_products.hpp, the held loads'
+  // dead-load stiffness by point_load_jacobian.
+  detail::SignedOuterProducts terms;
   std::vector<PointLoad> held;
   for (const auto& c : contacts) {
     const double d = c.distance, f = c.force;
@@ -157,8 +154,8 @@ MatX closest_pair_force_stiffness(const Kinematics& kinematics, const std::vecto
     const Vec3& nrm = c.normal;
     const MatX J = kinematics.position_jacobian(c.first, c.s) - kinematics.position_jacobian(c.second, c.t);
     const Vec3 b1 = nrm.unitOrthogonal(), b2 = nrm.cross(b1);
-    gather(J.transpose() * b1, -f / d);  // the normal's rotation: -f J^T (I - n n^T) J / d
-    gather(J.transpose() * b2, -f / d);
+    terms.add(J.transpose() * b1, -f / d);  // the normal's rotation: -f J^T (I - n n^T) J / d
+    terms.add(J.transpose() * b2, -f / d);
     held.push_back({c.first, c.s, -f * nrm});  // -f n . d2(Delta)/dq2
     held.push_back({c.second, c.t, f * nrm});
     // The closest points' motion: + f D_qx D_xx^-1 D_xq over the free ones of x = (s, t).
@@ -181,20 +178,13 @@ MatX closest_pair_force_stiffness(const Kinematics& kinematics, const std::vecto
       // A direction with D_xx's eigenvalue at or below kSlideFloor / d (parallel strands) is dropped.
       for (int k = 0; k < 2; ++k)
         if (eigen.eigenvalues()[k] > kSlideFloor / d)
-          gather(Dqx * eigen.eigenvectors().col(k), f / eigen.eigenvalues()[k]);
+          terms.add(Dqx * eigen.eigenvectors().col(k), f / eigen.eigenvalues()[k]);
     } else if (free_s || free_t) {
       const int k = free_s ? 0 : 1;
-      if (Dxx(k, k) > kSlideFloor / d) gather(Dqx.col(k), f / Dxx(k, k));
+      if (Dxx(k, k) > kSlideFloor / d) terms.add(Dqx.col(k), f / Dxx(k, k));
     }
   }
-  MatX stiffness = MatX::Zero(size, size);
-  for (const auto* group : {&positive, &negative}) {
-    if (group->empty()) continue;
-    MatX U(size, static_cast<Eigen::Index>(group->size()));
-    for (std::size_t j = 0; j < group->size(); ++j) U.col(static_cast<Eigen::Index>(j)) = (*group)[j];
-    stiffness.selfadjointView<Eigen::Lower>().rankUpdate(U, group == &positive ? 1.0 : -1.0);
-  }
-  stiffness.triangularView<Eigen::StrictlyUpper>() = stiffness.transpose();
+  MatX stiffness = terms.sum(size);
   if (!held.empty()) stiffness += point_load_jacobian(kinematics, held);
   return stiffness;
 }

@@ -17,6 +17,7 @@
 #include "rodvv/solvers/superhelix/load_stiffness.hpp"
 
 #include "arc_point.hpp"
+#include "signed_outer_products.hpp"
 
 namespace rodvv::solvers::superhelix {
 
@@ -293,13 +294,9 @@ MatX self_contact_hessian(const Kinematics& kinematics, const SelfContact& conta
   // Every term but the held loads' is a weighted outer product u w u^T of a vector u = J^T v (J: 3 x 3N):
   // phi'' (J^T n)(J^T n)^T, the normal's rotation -f/d J^T (I - n n^T) J = -f/d sum over an orthonormal
   // pair b1, b2 perpendicular to n of (J^T b)(J^T b)^T, and the foot's motion +f/D_tt D_qt D_qt^T. They are
-  // gathered as columns sqrt(|w|) u and added by two symmetric rank-k updates (one product instead of
-  // four dense outer products per contact).
-  std::vector<VecX> positive, negative;
-  const auto gather = [&](VecX u, double w) {
-    if (w > 0.0) positive.push_back(std::sqrt(w) * u);
-    if (w < 0.0) negative.push_back(std::sqrt(-w) * u);
-  };
+  // summed by two symmetric rank-k updates (signed_outer_products.hpp), one product instead of four dense
+  // outer products per contact.
+  detail::SignedOuterProducts terms;
   // -f n . d2(Delta)/dq2 is the dead-load stiffness of the forces -f n at the point and +f n at the
   // foot (F = sum J^T f is linear in f).
   std::vector<PointLoad> held;
@@ -308,9 +305,9 @@ MatX self_contact_hessian(const Kinematics& kinematics, const SelfContact& conta
     const Vec3& n = pair.normal;
     const MatX J = kinematics.position_jacobian(pair.first, pair.s) - kinematics.position_jacobian(pair.second, pair.t);
     const Vec3 b1 = n.unitOrthogonal(), b2 = n.cross(b1);
-    gather(J.transpose() * n, stiffness);
-    gather(J.transpose() * b1, -f / d);
-    gather(J.transpose() * b2, -f / d);
+    terms.add(J.transpose() * n, stiffness);
+    terms.add(J.transpose() * b1, -f / d);
+    terms.add(J.transpose() * b2, -f / d);
     held.push_back({pair.first, pair.s, -f * n});
     held.push_back({pair.second, pair.t, f * n});
     if (!(pair.t > 0.0 && pair.t < ell)) continue;  // a foot at an end of the rod stays there
@@ -321,16 +318,9 @@ MatX self_contact_hessian(const Kinematics& kinematics, const SelfContact& conta
     const Vec3 across = Q.tangent - n.dot(Q.tangent) * n;  // (I - n n^T) T_Q
     const VecX Dqt = -(J.transpose() * across) / d -
                      kinematics.rotation_jacobian(pair.second, pair.t).transpose() * Q.tangent.cross(n);
-    gather(Dqt, f / Dtt);
+    terms.add(Dqt, f / Dtt);
   }
-  MatX hessian = MatX::Zero(size, size);
-  for (const auto* group : {&positive, &negative}) {
-    if (group->empty()) continue;
-    MatX U(size, static_cast<Eigen::Index>(group->size()));
-    for (std::size_t j = 0; j < group->size(); ++j) U.col(static_cast<Eigen::Index>(j)) = (*group)[j];
-    hessian.selfadjointView<Eigen::Lower>().rankUpdate(U, group == &positive ? 1.0 : -1.0);
-  }
-  hessian.triangularView<Eigen::StrictlyUpper>() = hessian.transpose();
+  MatX hessian = terms.sum(size);
   hessian += point_load_jacobian(kinematics, held);
   return hessian;
 }
