@@ -69,6 +69,9 @@ Vec2 closest_points(const Kinematics& kinematics, std::size_t P, std::size_t Q, 
         if (!held[k]) step[k] = -g[k] / std::max(std::abs(H(k, k)), kCurvatureFloor);
     }
     if (step.cwiseAbs().maxCoeff() <= kStepRoundOff * ell) break;
+    const auto free_part = [&](const Vec2& v) {
+      return std::max(held[0] ? 0.0 : std::abs(v[0]), held[1] ? 0.0 : std::abs(v[1]));
+    };
     double alpha = 1.0;
     bool moved = false;
     for (int halving = 0; halving < 50; ++halving, alpha *= 0.5) {
@@ -79,9 +82,6 @@ Vec2 closest_points(const Kinematics& kinematics, std::size_t P, std::size_t Q, 
       // Near the minimum D's decrease drowns in its rounding: a full step that reduces the free part of
       // grad D is taken (a held variable's component stays large at the bound).
       const Vec2 trial_g(there.gap.dot(there.P.tangent), -there.gap.dot(there.Q.tangent));
-      const auto free_part = [&](const Vec2& v) {
-        return std::max(held[0] ? 0.0 : std::abs(v[0]), held[1] ? 0.0 : std::abs(v[1]));
-      };
       const bool final_step =
           halving == 0 && step.cwiseAbs().maxCoeff() <= 1e-6 * ell && free_part(trial_g) < free_part(g);
       if (final_step || there.f <= here.f + 1e-4 * taken) {

@@ -154,8 +154,8 @@ double hard_contact_force_scale(const RodModel& model) {
 }
 
 HardContactStatics solve_static_with_hard_contact(const RodModel& model, const StaticOptions& options) {
-  validate(model);
-  if (!(model.self_contact.radius > 0.0 && is_hard(model.self_contact)))
+  validate(model);  // a hard law has a radius > 0
+  if (!is_hard(model.self_contact))
     throw InputError("self_contact.law", "invalid parameter 'self_contact.law': solve_static_with_hard_contact "
                                          "needs hard self-contact (law Hard, radius > 0)");
   if (!model.end_moment.isZero(0.0))

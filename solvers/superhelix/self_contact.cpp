@@ -36,11 +36,6 @@ double curvature(const Kinematics& kinematics, std::size_t e) {
   return std::hypot(kinematics.q()(i + 1), kinematics.q()(i + 2));
 }
 
-// The barrier of the law; the hard law has none (stiffness 0: no energy, force or force rate).
-contact::CubicBarrier barrier_of(const SelfContact& contact) {
-  return {contact.radius, is_hard(contact) ? 0.0 : contact.stiffness};
-}
-
 // The chord polyline (c chords per element) and its sagitta bound delta.
 struct ChordPolyline {
   std::size_t chords_per_element = 1;
@@ -93,7 +88,7 @@ std::optional<ArcFoot> foot_in_contact(const Kinematics& kinematics, const SelfC
 void add_contacts(const Kinematics& kinematics, const SelfContact& contact, const ChordPolyline& polyline,
                   const std::vector<double>& weights, std::size_t point_element, std::size_t foot_element,
                   std::vector<ArcContact>& contacts) {
-  const contact::CubicBarrier law = barrier_of(contact);
+  const contact::CubicBarrier law{contact.radius, contact.stiffness};
   const double ell = kinematics.element_length();
   const std::size_t per = kinematics.points_per_element(), c = polyline.chords_per_element;
   for (std::size_t g = 0; g < per; ++g) {
@@ -243,7 +238,7 @@ std::vector<ArcContact> self_contacts_all_pairs(const Kinematics& kinematics, co
 }
 
 double self_contact_energy(const SelfContact& contact, const std::vector<ArcContact>& contacts) {
-  const contact::CubicBarrier law = barrier_of(contact);
+  const contact::CubicBarrier law{contact.radius, contact.stiffness};
   double energy = 0.0;
   for (const auto& pair : contacts) energy += pair.weight * law.energy(pair.distance);
   return energy;
@@ -261,7 +256,7 @@ VecX self_contact_generalized_force(const Kinematics& kinematics, const std::vec
 double contact_field(const Kinematics& kinematics, const SelfContact& contact, std::size_t element, double sigma) {
   validate(contact);
   if (is_hard(contact)) return 0.0;  // no barrier, no field: the forces act through n(s) alone
-  const contact::CubicBarrier law = barrier_of(contact);
+  const contact::CubicBarrier law{contact.radius, contact.stiffness};
   const std::size_t n = kinematics.elements();
   const double ell = kinematics.element_length();
   const std::size_t excluded = contact_excluded_elements(contact.radius, ell);
@@ -288,7 +283,7 @@ double contact_field(const Kinematics& kinematics, const SelfContact& contact, s
 
 MatX self_contact_hessian(const Kinematics& kinematics, const SelfContact& contact,
                           const std::vector<ArcContact>& contacts) {
-  const contact::CubicBarrier law = barrier_of(contact);
+  const contact::CubicBarrier law{contact.radius, contact.stiffness};
   const double ell = kinematics.element_length();
   const auto size = 3 * static_cast<Eigen::Index>(kinematics.elements());
   // Every term but the held loads' is a weighted outer product u w u^T of a vector u = J^T v (J: 3 x 3N):

@@ -32,8 +32,9 @@ SpatialRodSolution solution_of(const RodModel& model, const VecX& q, const std::
     contact_forces.push_back({static_cast<double>(point.element) * ell + point.sigma, model.point_forces[g]});
   }
   const bool barrier = model.self_contact.radius > 0.0 && !hard_contacts;
-  for (const auto& pair : barrier ? self_contacts(kinematics, model.self_contact)
-                                  : hard_contacts ? *hard_contacts : std::vector<ArcContact>{}) {
+  const std::vector<ArcContact> found =
+      barrier ? self_contacts(kinematics, model.self_contact) : std::vector<ArcContact>{};
+  for (const auto& pair : hard_contacts ? *hard_contacts : found) {
     contact_forces.push_back({static_cast<double>(pair.first) * ell + pair.s, pair.force * pair.normal});
     contact_forces.push_back({static_cast<double>(pair.second) * ell + pair.t, -pair.force * pair.normal});
   }
@@ -70,7 +71,7 @@ SpatialRodSolution make_solution(const RodModel& model, const VecX& q, std::stri
 
 SpatialRodSolution make_solution(const RodModel& model, const VecX& q, const std::vector<ArcContact>& contacts,
                                  std::string method) {
-  if (!(model.self_contact.radius > 0.0 && is_hard(model.self_contact)))
+  if (!is_hard(model.self_contact))
     throw InputError("self_contact.law", "invalid parameter 'self_contact.law': contact forces are given only with "
                                          "hard self-contact (the barrier's follow from q)");
   const std::size_t n = model.elements;
