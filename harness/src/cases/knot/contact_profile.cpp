@@ -41,4 +41,19 @@ Series contact_force_series(double element_length, const solvers::superhelix::Se
   return thin_series("contact force p(s)", "s", "p (force per length)", s, p);
 }
 
+Series point_contact_force_series(double element_length, const std::vector<solvers::superhelix::ArcContact>& contacts) {
+  std::map<double, double> magnitude;  // by arclength; a point shared by two pairs sums them
+  for (const auto& c : contacts) {
+    if (c.force <= 0.0) continue;
+    magnitude[static_cast<double>(c.first) * element_length + c.s] += c.force;
+    magnitude[static_cast<double>(c.second) * element_length + c.t] += c.force;
+  }
+  std::vector<double> s, f;
+  for (const auto& [at, value] : magnitude) {
+    s.push_back(at);
+    f.push_back(value);
+  }
+  return thin_series("contact point forces f", "s", "f (force)", s, f);
+}
+
 }  // namespace rodvv::harness::knot_cases

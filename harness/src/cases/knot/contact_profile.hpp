@@ -21,4 +21,8 @@ Series contact_force_series(const solvers::rod3d::RodModel& model,
 Series contact_force_series(double element_length, const solvers::superhelix::SelfContact& contact,
                             const std::vector<solvers::superhelix::ArcContact>& contacts);
 
+// "contact point forces f": hard self-contact's point forces (superhelix/hard_self_contact.hpp), each
+// loaded pair's multiplier at the arclengths of both its closest points.
+Series point_contact_force_series(double element_length, const std::vector<solvers::superhelix::ArcContact>& contacts);
+
 }  // namespace rodvv::harness::knot_cases

@@ -18,7 +18,7 @@ namespace rodvv::harness::knot_cases {
 namespace sh = solvers::superhelix;
 using namespace cases;
 
-LevelOutput relax_superhelix_trefoil(const TrefoilKnot& k, std::size_t n) {
+TiedSuperHelixTrefoil tie_superhelix_trefoil(const TrefoilKnot& k, std::size_t n) {
   const double lambda = k.lambda(), h = k.radius();
   const BraidClosure braid{3, 1.25 * h, 10.0 * h, 0.6 * lambda, 3.0 * h, 2.0 * lambda};
   validate(braid);
@@ -37,8 +37,18 @@ LevelOutput relax_superhelix_trefoil(const TrefoilKnot& k, std::size_t n) {
   options.initial_q = laid.q;
   options.max_iterations = 2000;  // measured: 129 - 193 at N = 50 .. 400, looseness 0.03 .. 0.15
   options.tolerance = 1e-10;
-  const sh::StaticResult result = sh::solve_static(model, options);
+  return {model, sh::solve_static(model, options), laid.max_miss / h};
+}
 
+double span_along_pull(const sh::Kinematics& kinematics, const sh::RodModel& model) {
+  return (kinematics.tip_position() - model.root_position).x();
+}
+
+LevelOutput relax_superhelix_trefoil(const TrefoilKnot& k, std::size_t n) {
+  const TiedSuperHelixTrefoil tied = tie_superhelix_trefoil(k, n);
+  const sh::RodModel& model = tied.model;
+  const sh::StaticResult& result = tied.relaxed;
+  const double h = k.radius();
   const sh::Kinematics kinematics(model, result.q);
   const auto contacts = sh::self_contacts(kinematics, model.self_contact);
   if (contacts.empty())
@@ -48,14 +58,14 @@ LevelOutput relax_superhelix_trefoil(const TrefoilKnot& k, std::size_t n) {
   for (const auto& c : contacts) deepest = std::max(deepest, 1.0 - c.distance / (2.0 * h));
 
   const SpatialRodSolution solution = sh::make_solution(model, result.q);
-  const double span = (kinematics.tip_position() - model.root_position).x();  // the ends' span along the pull
+  const double span = span_along_pull(kinematics, model);
 
   LevelOutput output;
   add_trefoil_metrics(output, solution, k.B, k.T, span, {kSuperHelixContactMethod, result.iterations, result.residual});
   output.metrics["contact_points"] = diagnostic(double(contacts.size()));
   output.series.push_back(contact_force_series(kinematics.element_length(), model.self_contact, contacts));
   output.metrics["deepest_overlap"] = diagnostic(deepest);
-  output.metrics["laying_miss"] = diagnostic(laid.max_miss / h);
+  output.metrics["laying_miss"] = diagnostic(tied.laying_miss);
   output.metrics["iterations"] = diagnostic(double(result.iterations));
   output.metrics["equilibrium_residual"] = diagnostic(result.residual);
   return output;

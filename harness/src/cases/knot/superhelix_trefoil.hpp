@@ -14,6 +14,9 @@
 
 #include "rodvv/harness/case.hpp"
 #include "rodvv/harness/parameters.hpp"
+#include "rodvv/solvers/superhelix/kinematics.hpp"
+#include "rodvv/solvers/superhelix/model.hpp"
+#include "rodvv/solvers/superhelix/newton.hpp"
 #include "trefoil_metrics.hpp"
 
 namespace rodvv::harness::knot_cases {
@@ -22,6 +25,17 @@ inline constexpr const char* kSuperHelixContactMethod =
     "Super-Helix (Bertails et al. 2006) with a C^2 line-contact barrier (k/3)(2h - d)^3 per unit length between "
     "Gauss points and their feet on the helical arcs (chord sort-and-sweep broad phase); statics by Newton on the "
     "potential with its exact Hessian, Levenberg shift and at most 1.5 h of motion per step";
+
+// The knot tied in N elements and relaxed with the barrier: the model (barrier self-contact), its
+// equilibrium, and the laying's largest miss of the curve / h. SolverError from the statics.
+struct TiedSuperHelixTrefoil {
+  solvers::superhelix::RodModel model;
+  solvers::superhelix::StaticResult relaxed;
+  double laying_miss = 0.0;
+};
+TiedSuperHelixTrefoil tie_superhelix_trefoil(const TrefoilKnot& knot, std::size_t elements);
+// The ends' span along the pull e_x (the end shortening's L - span).
+double span_along_pull(const solvers::superhelix::Kinematics& kinematics, const solvers::superhelix::RodModel& model);
 
 // Ties the knot (its barrier k h^3 / T, the line barrier's stiffness per unit length) in N elements, relaxes it, and measures it: the trefoil metrics (trefoil_metrics.hpp), the
 // contact-force series and the diagnostics below. SolverError when the knot comes undone.
