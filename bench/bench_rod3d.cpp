@@ -13,6 +13,8 @@
 //    then the hard-contact Newton-LCP from the barrier's equilibrium) at N = 100, 200, 400.
 //  - BM_TrefoilKnotSuperHelix: the whole knot/trefoil-superhelix level (laying the Super-Helix on the
 //    braid closure, the potential Newton with line self-contact, metrics) at N = 50, 100, 200, 400.
+//  - BM_TrefoilKnotHardSuperHelix: the whole knot/trefoil-hard-superhelix level (the barrier knot above, then
+//    the Newton-LCP on the closest points of its arcs from that equilibrium) at N = 50, 100, 200, 400.
 //  - BM_Plectoneme: the whole knot/plectoneme-nodal level (laying the 15-degree ply, its relaxation under
 //    the dead pull with self-contact, metrics) at N = 200, 400, 800.
 //  - BM_PlectonemeSuperHelix: the whole knot/plectoneme-superhelix level (laying the twisted Super-Helix on the
@@ -111,6 +113,12 @@ void BM_TrefoilKnotSuperHelix(benchmark::State& bench) {
   for (auto _ : bench) benchmark::DoNotOptimize(c->run_level(c->info.parameters, double(bench.range(0))));
 }
 BENCHMARK(BM_TrefoilKnotSuperHelix)->Arg(50)->Arg(100)->Arg(200)->Arg(400)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+void BM_TrefoilKnotHardSuperHelix(benchmark::State& bench) {
+  const auto* c = rodvv::harness::default_registry().find("knot/trefoil-hard-superhelix");
+  for (auto _ : bench) benchmark::DoNotOptimize(c->run_level(c->info.parameters, double(bench.range(0))));
+}
+BENCHMARK(BM_TrefoilKnotHardSuperHelix)->Arg(50)->Arg(100)->Arg(200)->Arg(400)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 void BM_Plectoneme(benchmark::State& bench) {
   const auto* c = rodvv::harness::default_registry().find("knot/plectoneme-nodal");
