@@ -83,4 +83,11 @@ std::vector<MetricSpec> superhelix_trefoil_diagnostic_specs() {
           diagnostic_metric("equilibrium_residual", "final residual |r|_inf")};
 }
 
+void require_superhelix_trefoil_window(Case& c) {
+  // Measured at the ends (default levels): the N sweep 2026-11-27 (orders 1.3 to 1.9, with barrier 50 and 5000),
+  // the hard contact 2026-12-02; the nodal case's C/B window is kept.
+  require(c, ratio_window("C", "B", 0.3, 100.0, "the twist-to-bending ratios at which the trefoil was measured"));
+  require(c, looseness_window(0.08, 0.12, "the looseness at which the trefoil was measured"));
+}
+
 }  // namespace rodvv::harness::knot_cases

@@ -42,6 +42,9 @@ double span_along_pull(const solvers::superhelix::Kinematics& kinematics, const 
 LevelOutput relax_superhelix_trefoil(const TrefoilKnot& knot, std::size_t elements);
 // barrier = k h^3 / T in [50, 5000] (default 500), measured at both ends with the default levels of both cases.
 Parameter superhelix_barrier_parameter();
+// The windows of the Super-Helix trefoils' parameters (each case with its levels: the N sweep, the barrier
+// limit, the hard contact): looseness in [0.08, 0.12] and C/B in [0.3, 100], measured at their ends.
+void require_superhelix_trefoil_window(Case& c);
 // contact_points, deepest_overlap, laying_miss, iterations, equilibrium_residual.
 std::vector<MetricSpec> superhelix_trefoil_diagnostic_specs();
 

@@ -123,9 +123,7 @@ void add_trefoil_barrier_limit(Registry& registry) {
        "a line force k delta^2: 2/5 where strands cross (F ~ k delta^(5/2)), 1/2 where they run parallel (file "
        "comment; measured 0.42, 0.40, 0.41 over barrier 125 .. 8000)",
        0.014762, 0.038});
-  require(superhelix,
-          ratio_window("C", "B", 0.3, 100.0, "the twist-to-bending ratios at which the trefoil was measured"));
-  require(superhelix, looseness_window(0.08, 0.12, "the looseness at which the trefoil was measured"));
+  require_superhelix_trefoil_window(superhelix);
   registry.add(std::move(superhelix));
 }
 

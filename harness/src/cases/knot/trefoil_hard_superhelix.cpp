@@ -180,9 +180,7 @@ void add_trefoil_hard_superhelix(Registry& registry) {
       trefoil_parameters({radius_parameter()}),
       element_levels("number of elements", {50, 100, 200}, {50, 100, 200, 400}), std::move(metrics),
       std::move(gates), run);
-  // Measured at the window's ends (default levels, 2026-12-02): looseness 0.08 and 0.12, C/B 0.3 and 100 pass.
-  require(c, ratio_window("C", "B", 0.3, 100.0, "the twist-to-bending ratios at which the trefoil was measured"));
-  require(c, looseness_window(0.08, 0.12, "the looseness at which the trefoil was measured"));
+  require_superhelix_trefoil_window(c);
   registry.add(std::move(c));
 }
 

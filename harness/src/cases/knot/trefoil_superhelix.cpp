@@ -57,10 +57,7 @@ void add_trefoil_superhelix(Registry& registry) {
           {radius_parameter(), superhelix_barrier_parameter()}),
       element_levels("number of elements", {50, 100, 200}, {50, 100, 200, 400}), std::move(metrics),
       std::move(gates), run);
-  // Measured at the window's corners (default levels, 2026-11-27): looseness 0.08 and 0.12, barrier 50 and
-  // 5000, C/B 0.3 and 100 all pass (orders 1.3 to 1.9); the nodal case's C/B window is kept.
-  require(c, ratio_window("C", "B", 0.3, 100.0, "the twist-to-bending ratios at which the trefoil was measured"));
-  require(c, looseness_window(0.08, 0.12, "the looseness at which the trefoil was measured"));
+  require_superhelix_trefoil_window(c);
   registry.add(std::move(c));
 }
 
