@@ -61,9 +61,7 @@ void add_trefoil_hard_nodal(Registry& registry) {
       element_levels("number of edges", {50, 100, 200}, {50, 100, 200, 400}), std::move(metrics), std::move(gates),
       run);
   require_nodal_trefoil_window(c);
-  // The deepest overlap is round-off, whose bits follow the CPU (case.hpp, golden_absolute): measured 1.4e-8 of
-  // the tolerance. The goldens hold it to 1e-3, as the Super-Helix's hard trefoil (a thousandth of the gate's 1).
-  c.golden_absolute["overlap_over_tolerance"] = 1e-3;
+  c.golden_absolute["overlap_over_tolerance"] = kOverlapGoldenTolerance;  // round-off (trefoil_metrics.hpp)
   registry.add(std::move(c));
 }
 

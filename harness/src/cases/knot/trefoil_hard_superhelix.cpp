@@ -181,10 +181,7 @@ void add_trefoil_hard_superhelix(Registry& registry) {
       element_levels("number of elements", {50, 100, 200}, {50, 100, 200, 400}), std::move(metrics),
       std::move(gates), run);
   require_superhelix_trefoil_window(c);
-  // The deepest overlap is round-off, whose bits follow the CPU (case.hpp, golden_absolute): measured 1.6e-7 ..
-  // 1e-6 of the tolerance, and 1.6e-7 against 3.0e-7 at N = 100 on two CPUs. The goldens hold it to 1e-3, a
-  // thousand times the largest measured and a thousandth of the gate's 1.
-  c.golden_absolute["overlap_over_tolerance"] = 1e-3;
+  c.golden_absolute["overlap_over_tolerance"] = kOverlapGoldenTolerance;  // round-off (trefoil_metrics.hpp)
   registry.add(std::move(c));
 }
 

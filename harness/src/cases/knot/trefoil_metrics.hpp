@@ -64,4 +64,10 @@ Parameter radius_parameter();
 // The looseness h sqrt(T/B) in [low, high] (measured per rod); InputError naming radius otherwise.
 cases::Window looseness_window(double low, double high, std::string why);
 
+// The regression tolerance (Case::golden_absolute) of the hard trefoils' overlap_over_tolerance, the deepest
+// overlap over the statics' gap tolerance. It is round-off, whose bits follow the CPU (case.hpp): measured
+// 1.4e-8 on the nodal rod, 1.6e-7 .. 1e-6 on the Super-Helix (1.6e-7 against 3.0e-7 at N = 100 on two CPUs).
+// 1e-3: a thousand times the largest measured and a thousandth of the overlap gate's 1.
+inline constexpr double kOverlapGoldenTolerance = 1e-3;
+
 }  // namespace rodvv::harness::knot_cases
