@@ -28,6 +28,7 @@ namespace {
 using namespace rodvv::harness;
 using rodvv::Vec3;
 using rodvv::testing::failing_gates;
+using rodvv::testing::regated;
 using rodvv::testing::run_at_default_levels;
 namespace rod = rodvv::solvers::rod3d;
 namespace knot = rodvv::harness::knot_cases;
@@ -77,33 +78,27 @@ TEST(KnotContactProfile, SplitsEachPairByItsClosestPointParameters) {
 // (what a contact force with a tangential part, or a lumping twice as coarse, would give) fails the
 // magnitude gate.
 TEST(KnotCases, WrongOrderOrTripledErrorIsRed) {
+  RODVV_RELEASE_PRESET_ONLY("KnotCases.TrefoilPassesAtDefaultLevels");
+  const SweepResult ran = run_at_default_levels(named("knot/trefoil-nodal"));  // solved once, gated twice
   Case second = named("knot/trefoil-nodal");
   second.gates = {order_gate("H_deviation", 2.0, "wrong claim")};
-  EXPECT_FALSE(run_at_default_levels(second).passed());
-  Case tripled = named("knot/trefoil-nodal");
-  const LevelRunner original = tripled.run_level;
-  tripled.run_level = [original](const Parameters& p, double level) {
-    LevelOutput out = original(p, level);
-    *out.metrics["H_deviation"].error *= 3.0;
-    return out;
-  };
-  EXPECT_FALSE(run_at_default_levels(tripled).passed());
+  EXPECT_FALSE(regated(second, ran).passed());
+  const auto tripled = regated(named("knot/trefoil-nodal"), ran, [](const Parameters&, auto& metrics) {
+    *metrics.at("H_deviation").error *= 3.0;
+  });
+  EXPECT_FALSE(tripled.passed());
 }
 
 // The loose-knot limit: 1/2 B kappa_B^2 / T -> 1 as eps^2. A relation off by 1 % (a tension or a stiffness
 // misread by 1 %) adds 0.01 to every level's excess: the order falls to about 1.4, out of its window.
 TEST(KnotCases, LoosenessStudyPassesAndARelationOffByOnePercentIsRed) {
-  const auto result = run_at_default_levels(named("knot/trefoil-looseness-superhelix"));
+  const Case& study = named("knot/trefoil-looseness-superhelix");
+  const auto result = run_at_default_levels(study);
   EXPECT_TRUE(result.passed()) << failing_gates(result);
-  Case off = named("knot/trefoil-looseness-superhelix");
-  const LevelRunner original = off.run_level;
-  off.run_level = [original](const Parameters& p, double level) {
-    LevelOutput out = original(p, level);
-    const double ratio = 1.01 * out.metrics.at("perpendicular_ratio").computed;
-    out.metrics["perpendicular_excess"] = {ratio - 1.0, 0.0, ratio - 1.0, 1.0};
-    return out;
-  };
-  const auto wrong = run_at_default_levels(off);
+  const auto wrong = regated(study, result, [](const Parameters&, auto& metrics) {
+    const double ratio = 1.01 * metrics.at("perpendicular_ratio").computed;
+    metrics["perpendicular_excess"] = {ratio - 1.0, 0.0, ratio - 1.0, 1.0};
+  });
   EXPECT_FALSE(wrong.passed());
   ASSERT_TRUE(wrong.gates.front().measured.has_value());
   EXPECT_LT(*wrong.gates.front().measured, 1.6);
@@ -118,7 +113,7 @@ TEST(KnotCases, BarrierLimitPassesAndALinearPenaltysOrderIsRed) {
     EXPECT_TRUE(result.passed()) << name << failing_gates(result);
     Case linear = named(name);
     linear.gates = {order_gate("overlap", 1.0, "a linear penalty's overlap ~ F / k")};
-    EXPECT_FALSE(run_at_default_levels(linear).passed()) << name;
+    EXPECT_FALSE(regated(linear, result).passed()) << name;
   }
 }
 

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 #include <variant>
 
 #include <Eigen/Geometry>
@@ -19,6 +20,7 @@ namespace {
 
 using namespace rodvv::harness;
 using rodvv::testing::failing_gates;
+using rodvv::testing::regated;
 using rodvv::testing::run_at_default_levels;
 namespace rod = rodvv::solvers::rod3d;
 using rodvv::Vec3;
@@ -39,16 +41,18 @@ INSTANTIATE_TEST_SUITE_P(AllRod3dCases, Rod3dCase, ::testing::ValuesIn(rodvv::te
                          });
 
 TEST(Rod3dGatesHaveTeeth, SecondOrderClaimedAsFourthOrFirstFails) {
-  for (double claimed : {4.0, 1.0}) {
-    Case wrong = named("rod3d/mattiasson-2");
-    wrong.gates = {order_gate("tip_w", claimed, "wrong claim")};
-    EXPECT_FALSE(run_at_default_levels(wrong).passed()) << claimed;
-    Case helix = named("rod3d/helix-axial-wrench");
-    helix.gates = {order_gate("shape_max_error", claimed, "wrong claim")};
-    EXPECT_FALSE(run_at_default_levels(helix).passed()) << claimed;
-    Case buckling = named("rod3d/lateral-torsional");
-    buckling.gates = {order_gate("critical_load_relative", claimed, "wrong claim")};
-    EXPECT_FALSE(run_at_default_levels(buckling).passed()) << claimed;
+  RODVV_RELEASE_PRESET_ONLY("Rod3dCase.PassesAtDefaultLevels");
+  const std::pair<const char*, const char*> gated[] = {{"rod3d/mattiasson-2", "tip_w"},
+                                                       {"rod3d/helix-axial-wrench", "shape_max_error"},
+                                                       {"rod3d/lateral-torsional", "critical_load_relative"}};
+  for (const auto& [name, metric] : gated) {
+    const SweepResult ran = run_at_default_levels(named(name));  // solved once, gated with each wrong claim
+    EXPECT_TRUE(regated(named(name), ran).passed()) << name;      // its own gates on the same levels: green
+    for (double claimed : {4.0, 1.0}) {
+      Case wrong = named(name);
+      wrong.gates = {order_gate(metric, claimed, "wrong claim")};
+      EXPECT_FALSE(regated(wrong, ran).passed()) << name << " " << claimed;
+    }
   }
 }
 
@@ -170,25 +174,24 @@ namespace {
 // semi-tangential one its twist-held ends realize fails the magnitude gate: the two end models
 // differ by 22 %, far above the 2 x 4.5e-3 bound, so the case tells them apart.
 TEST(Rod3dGatesHaveTeeth, GreenhillOrderAndEndModelAreSeen) {
+  RODVV_RELEASE_PRESET_ONLY("Rod3dCase.PassesAtDefaultLevels");
+  const Case& greenhill_case = named("rod3d/greenhill");
+  const SweepResult ran = run_at_default_levels(greenhill_case);  // solved once; the variants gate its levels
+  EXPECT_TRUE(ran.passed()) << failing_gates(ran);
   for (double claimed : {4.0, 1.0}) {
-    Case wrong = named("rod3d/greenhill");
+    Case wrong = greenhill_case;
     wrong.gates = {order_gate("critical_moment_clamped_unloaded_relative", claimed, "wrong claim")};
-    EXPECT_FALSE(run_at_default_levels(wrong).passed()) << claimed;
+    EXPECT_FALSE(regated(wrong, ran).passed()) << claimed;
   }
-  Case axial = named("rod3d/greenhill");
-  const LevelRunner original = axial.run_level;
-  axial.run_level = [original](const Parameters& p, double level) {
-    LevelOutput out = original(p, level);
+  const auto axial = regated(greenhill_case, ran, [](const Parameters& p, auto& metrics) {
     const double B = parameter_value(p, "B"), L = parameter_value(p, "L");
     const double semi = rodvv::references::greenhill_semitangential_critical_moment({B, L, 0.0});
     const double greenhill = rodvv::references::greenhill_critical_moment({B, L, 0.0});
-    auto& sample = out.metrics.at("critical_moment_pinned_unloaded_relative");
+    auto& sample = metrics.at("critical_moment_pinned_unloaded_relative");
     sample.computed *= semi / greenhill;  // M_cr / (2 pi B/L)
     *sample.error = std::abs(sample.computed - 1.0);
-    return out;
-  };
-  EXPECT_FALSE(run_at_default_levels(axial).passed());
-  EXPECT_TRUE(run_at_default_levels(named("rod3d/greenhill")).passed());
+  });
+  EXPECT_FALSE(axial.passed());
 }
 
 }  // namespace
@@ -199,17 +202,16 @@ namespace {
 // relative error in EI gives: u ~ P L^3/EI ~ 50) fails the nodal-comparison bound (2 x 2.2e-3 at
 // N = 32), and the unmodified case passes.
 TEST(Rod3dGatesHaveTeeth, SuperHelixBatheBolourchiSeesTheNodalRod) {
-  Case wrong = named("superhelix/bathe-bolourchi");
-  const LevelRunner original = wrong.run_level;
-  wrong.run_level = [original](const Parameters& p, double level) {
-    LevelOutput out = original(p, level);
-    auto& sample = out.metrics.at("tip_along_load_vs_nodal");
+  RODVV_RELEASE_PRESET_ONLY("SuperHelixCase.PassesAtDefaultLevels");
+  const Case& bathe = named("superhelix/bathe-bolourchi");
+  const SweepResult ran = run_at_default_levels(bathe);  // solved once; the variant gates its levels
+  EXPECT_TRUE(ran.passed()) << failing_gates(ran);
+  const auto wrong = regated(bathe, ran, [](const Parameters&, auto& metrics) {
+    auto& sample = metrics.at("tip_along_load_vs_nodal");
     sample.computed += 0.01;
     *sample.error = std::abs(sample.computed - *sample.reference);
-    return out;
-  };
-  EXPECT_FALSE(run_at_default_levels(wrong).passed());
-  EXPECT_TRUE(run_at_default_levels(named("superhelix/bathe-bolourchi")).passed());
+  });
+  EXPECT_FALSE(wrong.passed());
 }
 
 }  // namespace
@@ -219,24 +221,23 @@ namespace {
 // rod3d/michell-ring: the second order claimed as fourth or first fails, and the ring compared with
 // Michell's threshold for B and C exchanged (2 pi sqrt(3) C/B, 2.6 x smaller) fails the bound.
 TEST(Rod3dGatesHaveTeeth, MichellOrderAndStiffnessRatioAreSeen) {
+  RODVV_RELEASE_PRESET_ONLY("Rod3dCase.PassesAtDefaultLevels");
+  const Case& michell = named("rod3d/michell-ring");
+  const SweepResult ran = run_at_default_levels(michell);  // solved once; the variants gate its levels
   for (double claimed : {4.0, 1.0}) {
-    Case wrong = named("rod3d/michell-ring");
+    Case wrong = michell;
     wrong.gates = {order_gate("critical_twist_relative", claimed, "wrong claim")};
-    EXPECT_FALSE(run_at_default_levels(wrong).passed()) << claimed;
+    EXPECT_FALSE(regated(wrong, ran).passed()) << claimed;
   }
-  Case swapped = named("rod3d/michell-ring");
-  const LevelRunner original = swapped.run_level;
-  swapped.run_level = [original](const Parameters& p, double level) {
-    LevelOutput out = original(p, level);
+  const auto swapped = regated(michell, ran, [](const Parameters& p, auto& metrics) {
     const double B = parameter_value(p, "B"), C = parameter_value(p, "C"), L = parameter_value(p, "L");
     const double right = rodvv::references::michell_ring({B, C, L}).twist_angle;
     const double wrong = rodvv::references::michell_ring({C, B, L}).twist_angle;
-    auto& sample = out.metrics.at("critical_twist_relative");
+    auto& sample = metrics.at("critical_twist_relative");
     sample.computed *= right / wrong;
     *sample.error = std::abs(sample.computed - 1.0);
-    return out;
-  };
-  EXPECT_FALSE(run_at_default_levels(swapped).passed());
+  });
+  EXPECT_FALSE(swapped.passed());
 }
 
 }  // namespace
