@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <functional>
+#include <initializer_list>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -59,6 +60,17 @@ inline harness::SweepResult regated(const harness::Case& c, const harness::Sweep
   if (edit)
     for (auto& level : levels) edit(c.info.parameters, level.metrics);
   return harness::finish_sweep(c, c.info.parameters, std::move(levels));
+}
+
+// The case's gates replaced by one order gate on `metric` at each of the wrong `claims`: each fails on the levels
+// of `ran` (a sweep of c at its defaults), which are not solved again.
+inline void expect_wrong_order_claims_fail(const harness::Case& c, const harness::SweepResult& ran,
+                                           const std::string& metric, std::initializer_list<double> claims = {4.0, 1.0}) {
+  for (const double claimed : claims) {
+    harness::Case wrong = c;
+    wrong.gates = {harness::order_gate(metric, claimed, "wrong claim")};
+    EXPECT_FALSE(regated(wrong, ran).passed()) << c.info.name << ": " << metric << " claimed at order " << claimed;
+  }
 }
 
 inline std::string failing_gates(const harness::SweepResult& result) {

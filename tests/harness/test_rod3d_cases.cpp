@@ -20,6 +20,7 @@ namespace {
 
 using namespace rodvv::harness;
 using rodvv::testing::failing_gates;
+using rodvv::testing::expect_wrong_order_claims_fail;
 using rodvv::testing::regated;
 using rodvv::testing::run_at_default_levels;
 namespace rod = rodvv::solvers::rod3d;
@@ -48,11 +49,7 @@ TEST(Rod3dGatesHaveTeeth, SecondOrderClaimedAsFourthOrFirstFails) {
   for (const auto& [name, metric] : gated) {
     const SweepResult ran = run_at_default_levels(named(name));  // solved once, gated with each wrong claim
     EXPECT_TRUE(regated(named(name), ran).passed()) << name;      // its own gates on the same levels: green
-    for (double claimed : {4.0, 1.0}) {
-      Case wrong = named(name);
-      wrong.gates = {order_gate(metric, claimed, "wrong claim")};
-      EXPECT_FALSE(regated(wrong, ran).passed()) << name << " " << claimed;
-    }
+    expect_wrong_order_claims_fail(named(name), ran, metric);
   }
 }
 
@@ -178,11 +175,7 @@ TEST(Rod3dGatesHaveTeeth, GreenhillOrderAndEndModelAreSeen) {
   const Case& greenhill_case = named("rod3d/greenhill");
   const SweepResult ran = run_at_default_levels(greenhill_case);  // solved once; the variants gate its levels
   EXPECT_TRUE(ran.passed()) << failing_gates(ran);
-  for (double claimed : {4.0, 1.0}) {
-    Case wrong = greenhill_case;
-    wrong.gates = {order_gate("critical_moment_clamped_unloaded_relative", claimed, "wrong claim")};
-    EXPECT_FALSE(regated(wrong, ran).passed()) << claimed;
-  }
+  expect_wrong_order_claims_fail(greenhill_case, ran, "critical_moment_clamped_unloaded_relative");
   const auto axial = regated(greenhill_case, ran, [](const Parameters& p, auto& metrics) {
     const double B = parameter_value(p, "B"), L = parameter_value(p, "L");
     const double semi = rodvv::references::greenhill_semitangential_critical_moment({B, L, 0.0});
@@ -224,11 +217,7 @@ TEST(Rod3dGatesHaveTeeth, MichellOrderAndStiffnessRatioAreSeen) {
   RODVV_RELEASE_PRESET_ONLY("Rod3dCase.PassesAtDefaultLevels");
   const Case& michell = named("rod3d/michell-ring");
   const SweepResult ran = run_at_default_levels(michell);  // solved once; the variants gate its levels
-  for (double claimed : {4.0, 1.0}) {
-    Case wrong = michell;
-    wrong.gates = {order_gate("critical_twist_relative", claimed, "wrong claim")};
-    EXPECT_FALSE(regated(wrong, ran).passed()) << claimed;
-  }
+  expect_wrong_order_claims_fail(michell, ran, "critical_twist_relative");
   const auto swapped = regated(michell, ran, [](const Parameters& p, auto& metrics) {
     const double B = parameter_value(p, "B"), C = parameter_value(p, "C"), L = parameter_value(p, "L");
     const double right = rodvv::references::michell_ring({B, C, L}).twist_angle;
