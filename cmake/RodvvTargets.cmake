@@ -14,8 +14,25 @@ function(rodvv_sanitize target)
   endif()
 endfunction()
 
+# Precompiled headers: the standard library and Eigen headers that almost every translation unit
+# parses (about 1 s of a 2 s harness case file; measured with -fsyntax-only), parsed once per
+# target instead of once per file. RODVV_PRECOMPILED_HEADERS=OFF builds without them, which is
+# how to check that every file includes what it uses.
+option(RODVV_PRECOMPILED_HEADERS "Precompile the common standard-library and Eigen headers" ON)
+set(RODVV_PRECOMPILED_HEADER_LIST
+    <algorithm> <array> <cmath> <functional> <map> <memory> <optional> <stdexcept> <string>
+    <utility> <vector> <Eigen/Dense>)
+
+# rodvv_precompile(<target> [<extra header>...]): the common list plus the target's own heavy
+# headers (nlohmann/json, GoogleTest).
+function(rodvv_precompile target)
+  if(RODVV_PRECOMPILED_HEADERS)
+    target_precompile_headers(${target} PRIVATE ${RODVV_PRECOMPILED_HEADER_LIST} ${ARGN})
+  endif()
+endfunction()
+
 function(rodvv_add_library name)
-  cmake_parse_arguments(ARG "EXPORT" "" "SOURCES;PUBLIC_DEPENDS;PRIVATE_DEPENDS" ${ARGN})
+  cmake_parse_arguments(ARG "EXPORT" "" "SOURCES;PUBLIC_DEPENDS;PRIVATE_DEPENDS;PRECOMPILE" ${ARGN})
   add_library(rodvv_${name} ${ARG_SOURCES})
   add_library(rodvv::${name} ALIAS rodvv_${name})
   set_target_properties(rodvv_${name} PROPERTIES EXPORT_NAME ${name} OUTPUT_NAME rodvv_${name}
@@ -27,6 +44,7 @@ function(rodvv_add_library name)
   target_link_libraries(rodvv_${name} PUBLIC ${ARG_PUBLIC_DEPENDS} PRIVATE ${ARG_PRIVATE_DEPENDS})
   rodvv_warnings(rodvv_${name})
   rodvv_sanitize(rodvv_${name})
+  rodvv_precompile(rodvv_${name} ${ARG_PRECOMPILE})
   if(ARG_EXPORT)
     install(TARGETS rodvv_${name} EXPORT rodvvTargets
             ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}

@@ -10,7 +10,7 @@ namespace rodvv::reports {
 namespace {
 
 // RFC 4180: a field holding a comma, quote or line break is quoted, inner quotes doubled.
-std::string quoted(std::string_view field) {
+std::string csv_field(std::string_view field) {
   if (field.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(field);
   std::string out = "\"";
   for (const char ch : field) {
@@ -36,8 +36,8 @@ std::string render_csv(const ValidationReport& report) {
         if (it == level.metrics.end()) continue;
         const auto* spec = find_metric_spec(result.info, name);
         const auto& sample = it->second;
-        out += quoted(result.info.name) + ',' + quoted(result.info.family) + ',' +
-               cell(level.level) + ',' + cell(level.h) + ',' + quoted(name) + ',' +
+        out += csv_field(result.info.name) + ',' + csv_field(result.info.family) + ',' +
+               cell(level.level) + ',' + cell(level.h) + ',' + csv_field(name) + ',' +
                (spec ? harness::to_string(spec->kind) : "") + ',' + cell(sample.computed) + ',' +
                cell(sample.reference) + ',' + cell(sample.error) + ',' + cell(level.wall_seconds) +
                '\n';

@@ -1,12 +1,22 @@
 #!/usr/bin/env bash
-# cli_table.sh RODVV TABLE WORKDIR: runs every row of TABLE (EXIT | TEXT | ARGS, see bad_inputs.txt)
-# through RODVV and checks the exit code and that stdout+stderr contain TEXT. Prints every mismatch
-# and the count; exits 1 if any row fails. WORK in ARGS is replaced by WORKDIR; '' is an empty argument.
+# cli_table.sh RODVV TABLE WORKDIR [I/K]: runs every row of TABLE (EXIT | TEXT | ARGS, see
+# bad_inputs.txt) through RODVV and checks the exit code and that stdout+stderr contain TEXT. Prints
+# every mismatch and the count; exits 1 if any row fails, or if the table has fewer than 60 rows.
+# WORK in ARGS is replaced by WORKDIR; '' is an empty argument. With I/K, only the rows whose index
+# is I modulo K (1 <= I <= K): the K shards are K CTest tests that run in parallel.
 set -u
-rodvv=$1; table=$2; work=$3
-rows=0; failures=0
+rodvv=$1; table=$2; work=$3; shard=${4:-1/1}
+shard_index=${shard%/*}; shard_count=${shard#*/}
+if ! [[ "$shard_index" =~ ^[0-9]+$ && "$shard_count" =~ ^[0-9]+$ ]] ||
+   (( shard_index < 1 || shard_index > shard_count )); then
+  echo "cli_table.sh: shard '$shard' must be I/K with 1 <= I <= K" >&2; exit 2
+fi
+mkdir -p "$work"
+table_rows=0; rows=0; failures=0
 while IFS= read -r line; do
   [[ -z "${line// }" || "$line" == \#* ]] && continue
+  table_rows=$((table_rows + 1))
+  (( (table_rows - 1) % shard_count == shard_index - 1 )) || continue
   expected_exit=$(echo "${line%%|*}" | xargs)
   rest=${line#*|}
   text=$(echo "${rest%%|*}" | sed 's/^ *//; s/ *$//')
@@ -24,5 +34,5 @@ while IFS= read -r line; do
       "$(echo "$output" | tail -3)"
   fi
 done < "$table"
-echo "$rows rows, $failures failed"
-[[ $rows -ge 60 && $failures -eq 0 ]]
+echo "$rows rows (shard $shard of a $table_rows-row table), $failures failed"
+[[ $table_rows -ge 60 && $rows -ge 1 && $failures -eq 0 ]]

@@ -19,10 +19,12 @@
 #include "rodvv/harness/sweep.hpp"
 
 // Under the sanitizers (the asan preset, where a 3-D case's sweep takes minutes) a test is skipped whose solves
-// the sanitizers have already seen: a gate's teeth on a case's default sweep that the family's PassesAtDefaultLevels
-// test runs there, or the same solves at other parameter values. The sanitizers check the code a solve runs, which
-// those repeats do not change; what they check (a verdict, the numbers) is checked by the release preset, where
-// they run. Tests whose solves no other test runs are never skipped.
+// run code the sanitizers already see: a gate's teeth on a case's default sweep that another test runs there,
+// the same solves at other parameter values, or a case's whole default sweep (a family's PassesAtDefaultLevels),
+// whose code EveryCase.CoarsestLevelRunsAndGivesFiniteMetrics runs there at the coarsest level. The sanitizers
+// check the code a solve runs, which those repeats and finer levels do not change; what the skipped test checks
+// (a verdict, the numbers) is checked by the release preset, where it runs (and where every case's default
+// sweep is also its own CTest test). Tests of code no other sanitized test runs are never skipped.
 #if defined(__SANITIZE_ADDRESS__)
 #define RODVV_RELEASE_PRESET_ONLY(why) GTEST_SKIP() << "release preset only (its solves run under the sanitizers in " \
                                                     << why << ")"

@@ -87,7 +87,7 @@ INSTANTIATE_TEST_SUITE_P(
 // The looseness sweep is not compared metric by metric: at looseness 0.12 its relaxation ends on one of two
 // neighbouring knots (H deviation 0.0126 or 0.0140) depending on round-off, so it must pass its gates there.
 TEST(UnitsAtSmallLengths, SuperHelixKnots) {
-  RODVV_RELEASE_PRESET_ONLY("the knot cases' tests, at the default lengths");
+  RODVV_RELEASE_PRESET_ONLY("EveryCase.CoarsestLevelRunsAndGivesFiniteMetrics, at the default lengths");
   expect_metrics_free_of_units(named_case("knot/trefoil-superhelix"), 1e-3, 1.0, 1.0, 1e-5, 1.0, kKnotRoundOff);
   const Case& sweep = named_case("knot/trefoil-looseness-superhelix");
   Parameters pulled_hard = sweep.info.parameters;
