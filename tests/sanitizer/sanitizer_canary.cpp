@@ -11,11 +11,8 @@ namespace {
 
 // Read the index and the value at run time so that the compiler cannot fold or drop the defect.
 int heap_read_past_the_end(int index) {
-  std::vector<int>* values = new std::vector<int>(4, 1);
-  const int* raw = values->data();
-  const int value = raw[index];  // index 4: one past the allocation
-  delete values;
-  return value;
+  const std::vector<int> values(4, 1);
+  return values.data()[index];  // index 4: one past the allocation (data(), not operator[]: no assertion first)
 }
 
 int signed_overflow(int start) { return start + 1; }  // start = INT_MAX
