@@ -4,10 +4,13 @@
 // (O(N) per iteration; the KKT matrix of an inextensible rod is symmetric indefinite, and a dead
 // tip moment makes it unsymmetric), a backtracking line search on the scaled residual, and
 // continuation. With self-contact (model.hpp, self_contact.hpp) the barrier couples vertices far
-// apart along the rod, so the Jacobian is factorised by a sparse LU (COLAMD ordering) instead; no
-// vertex moves more than h/2 per Newton step (segments cannot jump through each other between the
-// barrier's evaluations; a pseudo-transient step so capped shrinks the pseudo-time step by the cap
-// ratio), and a line-search trial in which two segments intersect is shortened.
+// apart along the rod, so the Jacobian is factorised by a sparse LU (COLAMD ordering) instead; a
+// Newton step is shortened so that no two segments can pass through each other on its straight path
+// (their relative motion stays below their gap less h, or half their distance when in contact; no
+// vertex moves more than 2h), since the barrier is seen only at the ends of a step, and a line-search
+// trial in which two segments intersect is shortened. Under pseudo-transient continuation a rod whose
+// loads all have a potential (the barrier, no dead moments) accepts a step on the decrease of an l1
+// merit (energy plus a penalty on the inextensibility constraints; statics.cpp), else on its residual.
 //
 // Hard self-contact (model.self_contact.law = Hard, self_contact.hpp): the forces are unknowns. Each
 // Newton (or pseudo-transient) step solves the linearised equilibrium with the linearised constraints
