@@ -110,6 +110,32 @@ std::vector<ContactPair> contact_candidates(const SelfContact& contact, const st
   return find_contacts(contact, x, edge_length, reach);
 }
 
+double pass_through_free_fraction(const SelfContact& contact, const std::vector<Vec3>& x, const std::vector<Vec3>& u,
+                                  double edge_length) {
+  validate(contact, edge_length);
+  if (u.size() != x.size())
+    throw InputError("u", "invalid parameter 'u': " + std::to_string(u.size()) + " displacements for " +
+                              std::to_string(x.size()) + " vertices");
+  double largest = 0.0;
+  for (const Vec3& ui : u) {
+    if (!ui.allFinite()) throw InputError("u", "invalid parameter 'u': a displacement is not finite");
+    largest = std::max(largest, ui.norm());
+  }
+  const double h = contact.radius;
+  // Pairs farther apart than 2h + 2 max |u| cannot come within h of each other.
+  double alpha = 1.0;
+  for (const auto& pair :
+       contact::segments_within(x, 2.0 * h + 2.0 * largest, contact_excluded_neighbours(h, edge_length))) {
+    double w = 0.0;
+    for (std::size_t a : {pair.first, pair.first + 1})
+      for (std::size_t b : {pair.second, pair.second + 1}) w = std::max(w, (u[a] - u[b]).norm());
+    const double d = pair.closest.distance;
+    const double room = d >= 2.0 * h ? d - h : 0.5 * d;
+    if (alpha * w > room) alpha = room / w;
+  }
+  return alpha;
+}
+
 std::array<Vec3, 4> distance_gradient(const ContactPair& pair) {
   const Vec3& n = pair.normal;
   return {(1.0 - pair.s) * n, pair.s * n, -(1.0 - pair.t) * n, -pair.t * n};

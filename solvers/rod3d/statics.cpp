@@ -14,9 +14,9 @@
 #include "rodvv/common/errors.hpp"
 #include "rodvv/common/time_budget.hpp"
 #include "rodvv/common/validation.hpp"
-#include "rodvv/solvers/contact/segment_proximity.hpp"
 #include "rodvv/solvers/elastica2d/banded_lu.hpp"
 #include "rodvv/solvers/rod3d/discrete_energy.hpp"
+#include "rodvv/solvers/rod3d/self_contact.hpp"
 #include "hard_contact_step.hpp"
 
 namespace rodvv::solvers::rod3d {
@@ -307,40 +307,25 @@ void add_pseudo_time(const RodModel& model, const Scales& scales, const std::vec
   }
 }
 
-// The largest fraction alpha in (0, 1] of a step that no two segments can pass through on the way.
-// Along the straight path x + t alpha u (t in [0, 1]) the distance of two segments a, b changes by at
-// most t alpha w_ab, w_ab = max |u_a. - u_b.| over their four pairs of end points (a point of a segment
-// is a convex combination of its ends). So a pair d >= 2h apart keeps at least h if alpha w_ab <= d - h,
-// and a pair in contact (d < 2h, inside the barrier) keeps half its distance if alpha w_ab <= d / 2.
-// A rigid motion of the rod (the ply turning about its axis, a tail sliding out of it) has w = 0 and
-// is not limited, unlike a bound on each vertex's motion. A bound of kMaxVertexStep h on each vertex's
-// step still keeps the iterate near the path of the pseudo-time flow: measured on knot/plectoneme-nodal
-// (N = 200, 400, 800) with the energy merit, 2164, 1578, 1207 iterations at 1 h; 789, 971, 637 at 2 h;
-// 839, 997, 1118 at 3 h; 840, 1104, 1112 at 4 h; 915, 1087, 1266 with none.
+// The fraction of a step that self_contact.hpp's pass_through_free_fraction allows (no two segments pass
+// through each other on its straight path; a rigid motion, such as a ply turning about its axis or a
+// tail sliding out of it, is not shortened), and at most kMaxVertexStep h of motion of any vertex, which
+// keeps the iterate near the path of the pseudo-time flow. Measured on knot/plectoneme-nodal
+// (N = 200, 400, 800) with the energy merit: 2164, 1578, 1207 iterations at 1 h; 789, 971, 637 at 2 h;
+// 839, 997, 1118 at 3 h; 840, 1104, 1112 at 4 h; 915, 1087, 1266 with no bound.
 constexpr double kMaxVertexStep = 2.0;
 
 double contact_safe_fraction(const RodModel& model, const RodState& state, const VecX& dz) {
   const DofLayout layout(model);
-  const double h = model.self_contact.radius;
   std::vector<Vec3> u(model.elements + 1);
   double largest = 0.0;
   for (std::size_t i = 0; i <= model.elements; ++i) {
     u[i] = dz.segment<3>(Eigen::Index(layout.vertex(i)));
     largest = std::max(largest, u[i].norm());
   }
-  double alpha = largest > kMaxVertexStep * h ? kMaxVertexStep * h / largest : 1.0;
-  // Pairs farther apart than 2h + 2 max |u| cannot come within h of each other.
-  const auto near = contact::segments_within(state.position, 2.0 * h + 2.0 * largest,
-                                             contact_excluded_neighbours(h, rest_edge_length(model)));
-  for (const auto& pair : near) {
-    double w = 0.0;
-    for (std::size_t a : {pair.first, pair.first + 1})
-      for (std::size_t b : {pair.second, pair.second + 1}) w = std::max(w, (u[a] - u[b]).norm());
-    const double d = pair.closest.distance;
-    const double room = d >= 2.0 * h ? d - h : 0.5 * d;
-    if (alpha * w > room) alpha = room / w;
-  }
-  return alpha;
+  const double bound = kMaxVertexStep * model.self_contact.radius;
+  const double alpha = largest > bound ? bound / largest : 1.0;
+  return std::min(alpha, pass_through_free_fraction(model.self_contact, state.position, u, rest_edge_length(model)));
 }
 
 struct NewtonOutcome {

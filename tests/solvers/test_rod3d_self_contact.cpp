@@ -167,6 +167,52 @@ TEST(Rod3dSelfContact, ExcludedNeighboursAndBadInput) {
   EXPECT_EQ(parameter_of(m), "self_contact.radius");
 }
 
+// Two straight strands joined far away: A along x (z = 0, x in [0, 1]), out to (5, 0, 0), over to
+// (0.5, -5, height) and back along y as B (x = 0.5, y in [-0.5, 0.5]) at `height`, so that B crosses
+// A's middle. B's vertices are the last 21.
+std::vector<Vec3> crossing_strands(double height) {
+  std::vector<Vec3> x;
+  for (int i = 0; i <= 20; ++i) x.push_back(Vec3(0.05 * i, 0.0, 0.0));
+  x.push_back(Vec3(5.0, 0.0, 0.0));
+  x.push_back(Vec3(0.5, -5.0, height));
+  for (int i = 0; i <= 20; ++i) x.push_back(Vec3(0.5, -0.5 + 0.05 * i, height));
+  return x;
+}
+
+TEST(Rod3dSelfContact, StepFractionStopsPassThroughNotRigidMotion) {
+  const double h = kContact.radius, d0 = 0.2;  // B 0.2 above A: apart (2h = 0.13)
+  const auto x = crossing_strands(d0);
+  // B pushed straight down through A to the mirror height: both end points of the step are 0.2 apart,
+  // so a barrier seen only there would not notice that B went through A half way. (The segment joining
+  // B to the fixed vertex before it stretches, and keeps 0.3 - h from B's 6th segment on: a looser bound.)
+  std::vector<Vec3> u(x.size(), Vec3::Zero());
+  for (std::size_t i = x.size() - 21; i < x.size(); ++i) u[i] = Vec3(0.0, 0.0, -2.0 * d0);
+  const double alpha = rod::pass_through_free_fraction(kContact, x, u, kEdge);
+  // The closest pair is head-on: after the fraction the gap is exactly h, so d0 - 2 d0 alpha = h.
+  EXPECT_NEAR(alpha, (d0 - h) / (2.0 * d0), 1e-15);
+  // Any rigid motion of the whole rod, however long, is free.
+  EXPECT_EQ(rod::pass_through_free_fraction(kContact, x, std::vector<Vec3>(x.size(), Vec3(3.0, -7.0, 20.0)), kEdge),
+            1.0);
+  // A step that stays clear (B lowered to 2h + 0.01, still above h from A): not shortened.
+  std::vector<Vec3> clear(x.size(), Vec3::Zero());
+  for (std::size_t i = x.size() - 21; i < x.size(); ++i) clear[i] = Vec3(0.0, 0.0, -(d0 - 2.0 * h - 0.01));
+  EXPECT_EQ(rod::pass_through_free_fraction(kContact, x, clear, kEdge), 1.0);
+  // In contact (0.1 < 2h apart), pushed together by 0.1: half the distance is the room, so alpha = 1/2.
+  const auto touching = crossing_strands(0.1);
+  std::vector<Vec3> push(touching.size(), Vec3::Zero());
+  for (std::size_t i = touching.size() - 21; i < touching.size(); ++i) push[i] = Vec3(0.0, 0.0, -0.1);
+  EXPECT_NEAR(rod::pass_through_free_fraction(kContact, touching, push, kEdge), 0.5, 1e-15);
+  // Bad input names u.
+  try {
+    rod::pass_through_free_fraction(kContact, x, std::vector<Vec3>(3, Vec3::Zero()), kEdge);
+    ADD_FAILURE() << "no InputError for a wrong number of displacements";
+  } catch (const rodvv::InputError& e) {
+    EXPECT_EQ(e.parameter(), "u");
+  }
+  u[0].x() = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(rod::pass_through_free_fraction(kContact, x, u, kEdge), rodvv::InputError);
+}
+
 }  // namespace
 
 #include "rodvv/invariants/noether3d.hpp"

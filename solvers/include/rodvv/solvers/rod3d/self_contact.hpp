@@ -69,6 +69,18 @@ std::vector<ContactPair> self_contacts(const SelfContact& contact, const std::ve
 std::vector<ContactPair> contact_candidates(const SelfContact& contact, const std::vector<Vec3>& x,
                                             double edge_length, double reach);
 
+// The largest fraction alpha in (0, 1] of the vertex displacements u (one per vertex of x) that no two
+// segments can pass through each other on the way. Along the straight path x + t alpha u (t in [0, 1])
+// the distance of two segments a, b changes by at most t alpha w_ab, w_ab = max |u_a. - u_b.| over their
+// four pairs of end points (a point of a segment is a convex combination of its ends). So a pair
+// d >= 2h apart keeps at least h if alpha w_ab <= d - h, and a pair in contact (d < 2h, inside the
+// barrier) keeps half its distance if alpha w_ab <= d / 2; alpha is the largest value that meets both
+// for every pair. A rigid translation has w = 0 and is not shortened. The barrier, seen only at the
+// ends of a step, cannot stop a segment that jumps through another within it: this does.
+// InputError: as self_contacts, or u not one finite vector per vertex.
+double pass_through_free_fraction(const SelfContact& contact, const std::vector<Vec3>& x, const std::vector<Vec3>& u,
+                                  double edge_length);
+
 // The pair's four vertices a0, a1, b0, b1 (segment i joins vertices i and i + 1), in the order of
 // distance_gradient's blocks.
 inline std::array<std::size_t, 4> pair_vertices(const ContactPair& pair) {
