@@ -489,9 +489,10 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
       // Pseudo-transient continuation (Kelley & Keyes 1998). Without a potential (hard contact, a dead
       // moment) the step is taken whole if it keeps the residual finite, within 10 x its value (far
       // from equilibrium the residual need not fall at every step), and the segments apart. After a
-      // step that lowered the residual and was not shortened by contact_safe_fraction, tau grows by r_old / r_new (switched evolution relaxation),
-      // clamped to [1.2, 10]: at least 1.2, so that tau still grows when only a slow mode (a knot
-      // sliding along its tails) is left. A step that fails is retried with a quarter of tau.
+      // step that lowered the residual and was not shortened by contact_safe_fraction, tau grows by
+      // r_old / r_new (switched evolution relaxation), clamped to [1.2, 10]: at least 1.2, so that tau
+      // still grows when only a slow mode (a knot sliding along its tails) is left. A step that fails
+      // is retried with a quarter of tau.
       auto trial = try_step(model, state, dz, lambda, held, hard ? &step_forces : nullptr);
       if (trial && energy_merit) {
         // A minimisation: the step is taken if it lowers the merit (or, within the merit's round-off,
