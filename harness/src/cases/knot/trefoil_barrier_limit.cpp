@@ -22,7 +22,10 @@
 //          0.030, 0.038 (at a fixed mesh a stiffer barrier narrows the contact force's profile against the
 //          quadrature's spacing); 119, 133, 149, 187 iterations. (Laid with the relatively damped Gauss-Newton of
 //          superhelix_on_curve.cpp since 2026-11-28, barrier 2000 relaxes to a neighbouring knot: H_deviation
-//          0.035, overlap 0.0146.)
+//          0.035, overlap 0.0146; since the contact Hessian's rank updates are blocked by the columns'
+//          support, signed_outer_products.hpp, which rounds differently, to another: 0.030, 0.0148.)
+//   (The nodal statics' energy-merit steps, 2026-12-03, take 442, 573, 821 iterations at 500, 2000, 8000,
+//   to the same equilibria to 1e-7.)
 // Not gated: the knot's shape in the hard limit. At N = 100 the end shortening moves by 0.003 to 0.004 per
 // level on the Super-Helix and 0.009 to 0.03 on the nodal rod, not by a shrinking amount: at a fixed mesh
 // the narrowing contact is resolved ever more coarsely, and the mesh's error in the shape (0.001 .. 0.005 at
