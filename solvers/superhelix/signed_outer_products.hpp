@@ -38,7 +38,8 @@ class SignedOuterProducts {
       }
       std::vector<std::size_t> order(group->size());
       std::iota(order.begin(), order.end(), std::size_t{0});
-      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return support[a] > support[b]; });
+      const auto longer = [&](std::size_t a, std::size_t b) { return support[a] > support[b]; };
+      std::stable_sort(order.begin(), order.end(), longer);
       const double sign = group == &positive_ ? 1.0 : -1.0;
       for (std::size_t first = 0; first < order.size(); first += kBlock) {
         const std::size_t last = std::min(order.size(), first + kBlock);
