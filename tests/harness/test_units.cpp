@@ -65,7 +65,8 @@ INSTANTIATE_TEST_SUITE_P(
                       // iteration 50, measured 2026-12-03) to one of the knots of the same N (at N = 50,
                       // H deviation 0.434 or 0.361), so it is compared in units whose factors are powers of
                       // two: every rounding is then the default's scaled, and the metrics agree bit for bit
-                      // (measured). In the units above it must pass its gates (KnotUnits.NodalTrefoilPassesItsGatesInUnequalUnits).
+                      // (measured). In the units above it must pass its gates
+                      // (KnotUnits.NodalTrefoilPassesItsGatesInUnequalUnits).
                       UnitsCase{"knot/trefoil-nodal", kKnotRoundOff, 1e-12, 4.0, 0.25, 2.0},
                       UnitsCase{"knot/trefoil-superhelix", kKnotRoundOff, 1e-5},
                       // A hair bundle's SOCQP: the cone residual and the pair consistency are dimensionless (the
@@ -108,8 +109,8 @@ TEST(UnitsAtSmallLengths, SuperHelixKnots) {
 TEST(KnotUnits, NodalTrefoilPassesItsGatesInUnequalUnits) {
   RODVV_RELEASE_PRESET_ONLY("UnitsFree.SameMetricsInOtherUnits/knotXtrefoilXnodal, in power-of-two units");
   const Case& trefoil = named_case("knot/trefoil-nodal");
-  const SweepResult result = run_sweep(trefoil, rodvv::testing::in_other_units(trefoil.info.parameters, kLength, kMass, kTime),
-                                       trefoil.info.resolution.default_levels);
+  const Parameters unequal = rodvv::testing::in_other_units(trefoil.info.parameters, kLength, kMass, kTime);
+  const SweepResult result = run_sweep(trefoil, unequal, trefoil.info.resolution.default_levels);
   EXPECT_TRUE(result.passed()) << rodvv::testing::failing_gates(result);
 }
 
