@@ -349,6 +349,10 @@ std::optional<Trial> second_order_correction(const RodModel& model, const RodSta
   return try_step(model, state, corrected, lambda, held);
 }
 
+// From which pseudo-time step (add_pseudo_time's units: 1 relaxes the rod's global stiffness by a
+// factor e) a rejected step is retried with its second-order correction (newton, below).
+constexpr double kCorrectionPseudoTime = 1.0;
+
 struct NewtonOutcome {
   bool converged = false;
   std::size_t iterations = 0;
@@ -531,18 +535,22 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
         const double noise = std::max(here->noise, there.noise), change = there.value(nu) - here->value(nu);
         bool accept = change < -noise || (change <= noise && trial->measure < outcome.residual);
         std::optional<Merit> corrected_merit;
-        if (!accept) {
+        if (!accept && pseudo_time >= kCorrectionPseudoTime) {
           // The Maratos effect: near a solution a good step can raise the merit through the
           // constraints' curvature alone. A second-order correction (Nocedal & Wright 2006, §15.5-15.6)
           // adds the step that, with the same factorised matrix, cancels the constraint violations
           // c(x + dz) left by the step, and the corrected point is measured instead. It only ever
           // rescues a step (a bad correction raises the merit and is refused), so it changes the path,
-          // not what an equilibrium is. Measured on knot/trefoil-nodal at N = 100, 200, 400: 181
-          // iterations after the refinement to N = 400 without it (the residual rule: 45), 32 with it
-          // (bench_rod3d BM_TrefoilKnot/400: 2.7 -> 1.7 s); knot/plectoneme-nodal at N = 200, 400, 800:
-          // 789, 971, 637 -> 700, 959, 1011 iterations (33.6 -> 37.4 s CPU), other equilibria of the
-          // same N within the case's envelopes. Tried only when the step raised the constraint
-          // violation or lowered the residual: slower on both (1.9 to 2.3 s; 789, 1018, 1171).
+          // not what an equilibrium is. Tried from tau = kCorrectionPseudoTime on (the Newton-like
+          // regime; a shorter tau is a step that was too long, which a shorter tau mends). Measured
+          // on knot/trefoil-nodal at N = 100, 200, 400 (tying at 100, refining): 181 iterations
+          // after the refinement to N = 400 without it (the residual rule: 45), 32 with it at every tau,
+          // 34 from tau = 1 (bench_rod3d BM_TrefoilKnot/400: 2.7 -> 1.7 s); knot/plectoneme-nodal at N = 200, 400,
+          // 800: 789, 971, 637 iterations (33.6 s CPU) without it, 700, 959, 1011 (37.4 s) at every
+          // tau, 700, 900, 575 (28.9 s) from 0.1, 696, 897, 575 (25.8 s) from 1, 720, 909, 594 (24.4 s)
+          // from 10, 842, 969, 588 (32.6 s; the trefoil 2.9 s) from 100; other equilibria of the same
+          // N within the case's envelopes. Tried only when the step raised the constraint violation or
+          // lowered the residual: slower on both (1.9 to 2.3 s; 789, 1018, 1171).
           if (auto corrected = second_order_correction(model, state, dz, *trial, lambda, held, layout,
                                                        solve_in_units)) {
             const Merit at = merit(model, corrected->state, lambda, corrected->residual);

@@ -225,9 +225,10 @@ void add_plectoneme_nodal(Registry& registry) {
   // 14.9 s). At 30 degrees N = 200 converges (theta 30.5 deg, laws within 11 %, n_t 24 %, H 0.39) but
   // takes minutes, N = 400 more than 7; at 35 degrees the ply does not hold (the relaxation leaves the
   // ply range, theta > 45 deg). Since the second-order correction (statics.cpp, 2026-12-03) 25 degrees
-  // converges at N = 200 and 400 (3139 and 7752 iterations, 18 and 103 s CPU; H_deviation 0.193, 0.097;
-  // laws -0.054, -0.057, -0.076, -0.244 and -0.019, -0.015, -0.021, -0.067; theta 25.10, 24.96 deg) but
-  // N = 800 passes 240 s: the range stays [10, 20] until the end loop's soft mode relaxes faster.
+  // converges at N = 200 and 400 (6163 and 13375 iterations, 34 and 159 s CPU; H_deviation 0.193, 0.096;
+  // laws -0.054, -0.058, -0.076, -0.241 and -0.018, -0.015, -0.020, -0.070; theta 25.10, 24.95 deg; with
+  // the correction tried at every tau: 3139 and 7752 iterations, 18 and 103 s, the same figures to 1e-3)
+  // but N = 800 passes 240 s: the range stays [10, 20] until the end loop's soft mode relaxes faster.
 }
 
 }  // namespace rodvv::harness::knot_cases
