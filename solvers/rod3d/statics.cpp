@@ -206,6 +206,12 @@ struct Merit {
   double value(double nu) const { return energy + nu * violation; }
 };
 
+// The merit's penalty weight nu = 2 max |lambda_j| (above), raised from `nu` to cover the tensions of `at`.
+double penalty_weight(double nu, const RodState& at) {
+  for (double tension : at.multiplier) nu = std::max(nu, 2.0 * std::abs(tension));
+  return nu;
+}
+
 Merit merit(const RodModel& model, const RodState& state, double lambda, const VecX& r) {
   const EnergyParts parts = energy(model, state);
   Merit m;
@@ -329,7 +335,7 @@ double contact_safe_fraction(const RodModel& model, const RodState& state, const
 }
 
 // The second-order correction of a step dz from `state` whose trial is `trial` (Nocedal & Wright 2006,
-// §15.6): the solve, with the matrix factorised for dz, of the right-hand side whose only entries are
+// §15.5-15.6): the solve, with the matrix factorised for dz, of the right-hand side whose only entries are
 // the constraint violations -c(x + dz) (the multiplier rows of the trial's residual), added to dz. Nothing
 // when there are no constraints, when the corrected step would move two segments through each other or
 // a vertex further than the step limit allows, or when it is not a state (try_step).
@@ -529,9 +535,7 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
         // with this rule and that bound; 789, 971, 637 with this rule and contact_safe_fraction.)
         if (!here) here = merit(model, state, lambda, r);
         const Merit there = merit(model, trial->state, lambda, trial->residual);
-        double nu = 0.0;
-        for (const RodState* at : {&state, &trial->state})
-          for (double tension : at->multiplier) nu = std::max(nu, 2.0 * std::abs(tension));
+        const double nu = penalty_weight(penalty_weight(0.0, state), trial->state);
         const double noise = std::max(here->noise, there.noise), change = there.value(nu) - here->value(nu);
         bool accept = change < -noise || (change <= noise && trial->measure < outcome.residual);
         std::optional<Merit> corrected_merit;
@@ -554,8 +558,7 @@ NewtonOutcome newton(const RodModel& model, RodState& state, double lambda, cons
           if (auto corrected = second_order_correction(model, state, dz, *trial, lambda, held, layout,
                                                        solve_in_units)) {
             const Merit at = merit(model, corrected->state, lambda, corrected->residual);
-            double nu_c = nu;
-            for (double tension : corrected->state.multiplier) nu_c = std::max(nu_c, 2.0 * std::abs(tension));
+            const double nu_c = penalty_weight(nu, corrected->state);
             const double noise_c = std::max(here->noise, at.noise), change_c = at.value(nu_c) - here->value(nu_c);
             if (change_c < -noise_c) {
               trial = std::move(corrected);
