@@ -10,7 +10,10 @@ Writes into OUTDIR/plots:
   <case>-series-<name>.png     every series of the case's finest level; series named
                                "<plot>|<label>" share one figure <plot> with a legend (e.g.
                                "shape|computed" and "shape|closed form"); a series whose axes are
-                               labelled "x" and "y" is drawn with equal aspect (a rod's shape)
+                               labelled "x" and "y" is drawn with equal aspect (a rod's shape);
+                               a label starting "levels: " marks a measurement each level adds
+                               to a curve (a law over a parameter the levels vary): its points
+                               are gathered from every level and drawn as markers
   group-<group>-<name>.png     an unlabelled series overlaid across the cases of a group (finest levels)
   group-<group>-<metric>-vs-h.png
                                for a group of two or more cases, per error metric (kind "error")
@@ -287,8 +290,25 @@ def plot_key(series_name):
     return key, label
 
 
+LEVELS_PREFIX = "levels: "
+
+
+def gathered_over_levels(case, series):
+    """A "levels: " series with the points of every level that has it (level order); others as they are."""
+    if not plot_key(series["name"])[1].startswith(LEVELS_PREFIX):
+        return series
+    xs, ys = [], []
+    for level in case["levels"]:
+        for other in level.get("series") or []:
+            if other["name"] == series["name"]:
+                xs.extend(other["x"])
+                ys.extend(other["y"])
+    return dict(series, x=xs, y=ys)
+
+
 def series_plot(writer, case, level, members, stem):
     """One figure for the series sharing a plot key (members: list of series dicts)."""
+    members = [gathered_over_levels(case, series) for series in members]
     curves = [(plot_key(series["name"])[1], *clean_xy(series)) for series in members]
     curves = [c for c in curves if c[1]]
     if not curves:
@@ -306,14 +326,21 @@ def series_plot(writer, case, level, members, stem):
     if xlabel == "x" and ylabel == "y":
         ax.set_aspect("equal", adjustable="datalim")
     styles = ["-", "--", ":", "-."]
-    for i, (label, xs, ys) in enumerate(curves):
-        ax.plot(xs, [abs(y) for y in ys] if log else ys, styles[i % len(styles)], linewidth=1.2,
-                label=label or None)
+    lines = 0
+    for label, xs, ys in curves:
+        ys = [abs(y) for y in ys] if log else ys
+        if label.startswith(LEVELS_PREFIX):
+            ax.plot(xs, ys, "o", markersize=5, label=label[len(LEVELS_PREFIX):] + " (one point per level)")
+        else:
+            ax.plot(xs, ys, styles[lines % len(styles)], linewidth=1.2, label=label or None)
+            lines += 1
     if any(label for label, _, _ in curves):
         ax.legend(fontsize=7)
     file = writer.save(fig, stem)
     h = level.get("h")
     at = f"h = {h:.4g}" if finite(h) else "finest level"
+    if any(label.startswith(LEVELS_PREFIX) for label, _, _ in curves):
+        at += "; the markers: every level"
     return {"file": file, "caption": f"{key} ({at})" + (", |y| on a log axis" if log else "")}
 
 

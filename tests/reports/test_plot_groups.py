@@ -5,10 +5,12 @@
 
 A group of two or more cases gets, per error metric that at least two of them can draw, an
 error-vs-h and a work-precision figure; a group of one case, a metric only one case has and a
-shared invariant get none. Prints "skipped" and exits 0 when matplotlib is missing (as the C++
+shared invariant get none. A series labelled "levels: ..." gathers one point from every level (a
+law over a parameter the levels vary), the other series of the figure come from the finest level. Prints "skipped" and exits 0 when matplotlib is missing (as the C++
 plot tests skip).
 """
 
+import importlib.util
 import json
 import os
 import subprocess
@@ -50,6 +52,17 @@ def case(name, group, order, scale, cpu=False, extra_metric=None):
             "wall_seconds": 0.01}
 
 
+def law_case():
+    """Levels that each add one measured point to a law, drawn over the finest level's curve."""
+    out = case("demo/law/over-levels", "demo/law", 2.0, 1.0)
+    for k, lvl in enumerate(out["levels"]):
+        lvl["series"] = [{"name": "law|curve", "x_label": "a", "y_label": "b",
+                          "x": [0.0, 1.0, 2.0, 3.0], "y": [0.0, 1.0, 4.0, 9.0]},
+                         {"name": "law|levels: measured", "x_label": "a", "y_label": "b",
+                          "x": [float(k + 1)], "y": [float((k + 1) ** 2) * 1.01]}]
+    return out
+
+
 def results():
     return {"schema_version": 1, "merged_from": [], "passed": True,
             "provenance": {"cpu_model": "Test CPU", "host_cores": 2, "build_type": "Release"},
@@ -57,7 +70,7 @@ def results():
                       case("demo/two/reduced", "demo/two", 4.0, 3.0),
                       case("demo/one/alone", "demo/one", 2.0, 1.0),
                       case("demo/cpu/a", "demo/cpu", 2.0, 1.0, cpu=True),
-                      case("demo/cpu/b", "demo/cpu", 2.0, 2.0, cpu=True)]}
+                      case("demo/cpu/b", "demo/cpu", 2.0, 2.0, cpu=True), law_case()]}
 
 
 class GroupFigures(unittest.TestCase):
@@ -107,6 +120,24 @@ class GroupFigures(unittest.TestCase):
     def test_cases_keep_their_own_figures(self):
         self.assertEqual(self.manifest["cases"]["demo/one/alone"][0]["file"],
                          "plots/demo-one-alone-convergence.png")
+
+    def test_a_levels_series_is_drawn_from_every_level(self):
+        files = [entry for entry in self.manifest["cases"]["demo/law/over-levels"]
+                 if "series-law" in entry["file"]]
+        self.assertEqual(len(files), 1)
+        self.assertIn("the markers: every level", files[0]["caption"])
+        self.assertGreater(os.path.getsize(os.path.join(self.tmp.name, files[0]["file"])), 1000)
+
+    def test_gathering_takes_each_levels_points_in_order_and_leaves_other_series(self):
+        spec = importlib.util.spec_from_file_location("plot_results", SCRIPT)
+        module = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(module)
+        law = law_case()
+        finest = law["levels"][-1]["series"]
+        gathered = module.gathered_over_levels(law, finest[1])
+        self.assertEqual(gathered["x"], [1.0, 2.0, 3.0])
+        self.assertEqual(gathered["y"], [1.01, 4.04, 9.09])
+        self.assertIs(module.gathered_over_levels(law, finest[0]), finest[0])
 
 
 if __name__ == "__main__":

@@ -24,6 +24,7 @@ void add_trefoil_barrier_limit(Registry& registry);  // both rods' trefoils as t
 void add_trefoil_hard_nodal(Registry& registry);  // the nodal rod's trefoil with hard contact
 void add_trefoil_hard_superhelix(Registry& registry);  // the Super-Helix's trefoil with hard contact
 void add_plectoneme_nodal(Registry& registry);  // plectoneme with a free end loop, both ends clamped, nodal 3-D rod
+void add_plectoneme_angles_nodal(Registry& registry);  // the nodal ply's laws over the helix angle, 10 .. 25 deg
 void add_plectoneme_superhelix(Registry& registry);  // the same ply on the Super-Helix, tip in a sliding clamp
 
 }  // namespace rodvv::harness::knot_cases

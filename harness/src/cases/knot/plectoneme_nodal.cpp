@@ -27,135 +27,46 @@
 // helix angle theta_0 (`helix_angle`), tails 40 h, the junction arcs 4 h, the end loop 8 h high with a
 // bulge of 2 h; the twist rate M_t(theta_0, h) / C; the barrier k = barrier T_ext / h^2. The problem is
 // then the same, up to units, for every B and h at a fixed C/B.
-#include <algorithm>
-#include <cmath>
 #include <numbers>
 #include <string>
 
 #include "../case_builder.hpp"
-#include "contact_profile.hpp"
 #include "knot_cases.hpp"
+#include "nodal_plectoneme.hpp"
 #include "plectoneme_tying.hpp"
 #include "ply_metrics.hpp"
-#include "rodvv/common/errors.hpp"
-#include "rodvv/invariants/noether3d.hpp"
-#include "rodvv/references/knot_and_ply.hpp"
-#include "rodvv/solvers/rod3d/self_contact.hpp"
-#include "rodvv/solvers/rod3d/solution.hpp"
-#include "rodvv/solvers/rod3d/state.hpp"
-#include "rodvv/solvers/rod3d/statics.hpp"
 
 namespace rodvv::harness::knot_cases {
 
 namespace {
 
-namespace rod = solvers::rod3d;
-namespace ref = references;
 using namespace cases;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kPlyLength = 120.0;  // the laid ply, in units of h
 constexpr double kTailLength = 40.0;  // each tail, in units of h
 
-const char* const kMethod = kContactStaticsMethod;
-
-struct Ply {
-  double B, C, h, theta0, barrier;
-};
-
-Ply ply_of(const Parameters& p) {
-  return {parameter_value(p, "B"), parameter_value(p, "C"), parameter_value(p, "radius"),
-          parameter_value(p, "helix_angle") * kPi / 180.0, parameter_value(p, "barrier")};
+LevelOutput run(const Parameters& p, double level) {
+  const NodalPly k = nodal_ply_of(p, parameter_value(p, "helix_angle") * kPi / 180.0);
+  const PlyLayout layout{k.h, k.theta0, kPlyLength * k.h, 4.0 * k.h, 8.0 * k.h, 2.0 * k.h, kTailLength * k.h};
+  return relax_nodal_plectoneme(k, layout, element_count(level));
 }
 
-LevelOutput run(const Parameters& p, double level) {
-  const std::size_t n = element_count(level);
-  const Ply k = ply_of(p);
-  const ref::PlectonemeSolution laid_law = ply_law(k.B, k.h, k.theta0);
-  // The twist that holds a left-handed ply: M_t / C > 0 (the law's M_t is a right-handed ply's).
-  const double T_ext = laid_law.tail_tension, twist_rate = -laid_law.ply.twisting_moment / k.C;
-  const PlyLayout layout{k.h, k.theta0, kPlyLength * k.h, 4.0 * k.h, 8.0 * k.h, 2.0 * k.h, kTailLength * k.h};
-  const TiedRod laid = lay_plectoneme(layout, n);
-  const PulledPly pulled = pull_laid_ply(laid, twist_rate, k.B, k.C, T_ext, {k.h, k.barrier * T_ext / (k.h * k.h)});
-  const rod::RodModel& model = pulled.model;
-
-  rod::StaticOptions options;
-  options.pseudo_transient = true;
-  options.max_iterations = 100 * n;  // measured: 1300 to 7100 iterations at N = 200 .. 800, theta = 10 .. 30 deg
-  options.tolerance = 1e-9;
-  const auto result = rod::solve_static(model, pulled.start, options);
-
-  const auto solution = rod::make_solution(model, result.state);
-  const double ebar = rod::rest_edge_length(model);
-  const auto contacts = rod::self_contacts(model.self_contact, result.state.position, ebar);
-  if (contacts.empty())
-    throw SolverError(kMethod, "the ply came undone: no self-contact at equilibrium", result.iterations,
-                      result.residual);
-
-  // The tails: the station at the middle of the root's tail.
-  const std::size_t tail = station_nearest(solution, 0.5 * kTailLength * k.h);
-  const Vec3 t_tail = solution.frame[tail].col(0);
-  PlyMeasurement ply;
-  ply.tail_tension = solution.force_n[tail].dot(t_tail);
-  ply.twisting_moment = solution.moment_m[tail].dot(t_tail);
-  const auto flattened = invariants::noether3d_flattened(solution);
-  for (double H : flattened) ply.H_deviation = std::max(ply.H_deviation, std::abs(H - flattened[tail]) / T_ext);
-
-  // The middle of the ply: the root strand's segments first .. of the pairs, the outer quarters dropped.
-  std::size_t lo = contacts.front().first, hi = contacts.front().first;
-  for (const auto& c : contacts) lo = std::min(lo, c.first), hi = std::max(hi, c.first);
-  const std::size_t from = lo + (hi - lo) / 4, to = hi - (hi - lo) / 4;
-  const auto tangent = [&](std::size_t j) { return (result.state.position[j + 1] - result.state.position[j]).normalized(); };
-  double R_sum = 0.0, theta_sum = 0.0, force_sum = 0.0;
-  std::size_t segments = 0;
-  for (std::size_t j = from; j <= to; ++j) {
-    const rod::ContactPair* closest = nullptr;
-    for (const auto& c : contacts)
-      if (c.first == j) {
-        force_sum += c.force;
-        if (!closest || c.distance < closest->distance) closest = &c;
-      }
-    if (!closest) continue;
-    R_sum += 0.5 * closest->distance;
-    theta_sum += 0.5 * std::acos(std::clamp(-tangent(j).dot(tangent(closest->second)), -1.0, 1.0));
-    ++segments;
-  }
-  if (segments < 3)
-    throw SolverError(kMethod, "no uniform ply: " + std::to_string(segments) + " strand segments in contact in its middle",
-                      result.iterations, result.residual);
-  ply.R = R_sum / double(segments);
-  ply.theta = theta_sum / double(segments);
-  if (!(ply.theta < 0.25 * kPi))
-    throw SolverError(kMethod, "no uniform ply: the helix angle in its middle is " + std::to_string(ply.theta * 180.0 / kPi) +
-                                   " deg, beyond the ply's 45", result.iterations, result.residual);
-  ply.contact_force = force_sum / (double(to - from + 1) * ebar);
-  std::size_t strand_stations = 0;
-  for (std::size_t i = 0; i < solution.s.size(); ++i) {
-    const double vertex = solution.s[i] / ebar + 0.5;  // the station's vertex index (clamped root)
-    if (vertex < double(from) + 1.0 || vertex > double(to)) continue;
-    ply.strand_tension += solution.force_n[i].dot(solution.frame[i].col(0));
-    ++strand_stations;
-  }
-  ply.strand_tension /= double(std::max<std::size_t>(strand_stations, 1));
-
-  LevelOutput output;
-  add_ply_metrics(output, ply, k.B, k.h, T_ext);
-  add_noether3d_metrics(output, solution, std::nullopt);
-  output.metrics["contact_pairs"] = diagnostic(double(contacts.size()));
-  output.series.push_back(contact_force_series(model, contacts));
-  output.metrics["iterations"] = diagnostic(double(result.iterations));
-  output.metrics["equilibrium_residual"] = diagnostic(result.residual);
-  return output;
+// The nodal ply's parameters with the laid helix angle before the barrier. helix_angle in [10, 20] and
+// barrier in [50, 2000], measured 2026-11-26 at the corners (H deviation orders 1.09 .. 1.75; 20 deg runs 2
+// to 5 minutes): at 22 deg N = 200 relaxes off the ply (2 strand segments in contact in its middle) and
+// N = 800 takes 258 s; at 12 deg with barrier 5000 the H deviation's order is 0.80.
+Parameters with_helix_angle(double angle) {
+  Parameters parameters = nodal_ply_parameters(50.0, 2000.0);
+  parameters.insert(parameters.end() - 1, make_parameter("helix_angle", angle, 10.0, 20.0, false, false, "degrees",
+                                                         "helix angle of the laid ply; T_ext is the tension law's "
+                                                         "at it and R = h"));
+  return parameters;
 }
 
 // One plectoneme case: the ply laid at `angle` degrees, swept over `levels`, gated by `gates`.
 Case plectoneme_case(const std::string& name, double angle, std::vector<double> levels, std::vector<double> extended,
                      std::vector<GateSpec> gates) {
-  std::vector<MetricSpec> metrics = ply_metric_specs();
-  for (auto& spec : noether3d_metric_specs(false, std::nullopt)) metrics.push_back(std::move(spec));
-  metrics.push_back(diagnostic_metric("contact_pairs", "segment pairs closer than 2h at equilibrium"));
-  metrics.push_back(diagnostic_metric("iterations", "Newton iterations of the pseudo-transient relaxation"));
-  metrics.push_back(diagnostic_metric("equilibrium_residual", "final scaled residual"));
   Case c = make_case(
       "knot",
       {name, "Plectoneme at " + std::to_string(int(angle)) + " deg: H through the ply and the ply's laws (nodal rod)",
@@ -164,19 +75,10 @@ Case plectoneme_case(const std::string& name, double angle, std::vector<double> 
        "pull T_ext = the tension law at the laid helix angle and R = h, relaxed to equilibrium.",
        "H(s) = H_tail through the ply (Noether, frictionless contact); T_ext R^2/B = 1/2 sin^4 theta (1 + 2/cos 2 "
        "theta) and the ply's M_t, p, n_t at the measured R, theta (PHYSICS.md §5.2)",
-       "Coleman & Swigon 2004 (Phil. Trans. R. Soc. A 362:1281); PHYSICS.md §1.2, §5.2", kMethod},
-      {make_parameter("B", 1.3, 0.0, 1e12, true, false, "force length^2", "bending stiffness EI1 = EI2"),
-       make_parameter("C", 0.9, 0.0, 1e12, true, false, "force length^2", "twisting stiffness GJ"),
-       make_parameter("radius", 0.05, 0.0, 1e6, true, false, "length", "rod radius h (contact at distance 2h)"),
-       // helix_angle in [10, 20] and barrier in [50, 2000], measured 2026-11-26 at the corners (H deviation
-       // orders 1.09 .. 1.75; 20 deg runs 2 to 5 minutes): at 22 deg N = 200 relaxes off the ply (2 strand
-       // segments in contact in its middle) and N = 800 takes 258 s; at 12 deg with barrier 5000 the H
-       // deviation's order is 0.80.
-       make_parameter("helix_angle", angle, 10.0, 20.0, false, false, "degrees",
-                      "helix angle of the laid ply; T_ext is the tension law's at it and R = h"),
-       make_parameter("barrier", 500.0, 50.0, 2000.0, false, false, "", "barrier stiffness k h^2 / T_ext")},
-      element_levels("number of edges", std::move(levels), std::move(extended)), std::move(metrics), std::move(gates),
-      run);
+       "Coleman & Swigon 2004 (Phil. Trans. R. Soc. A 362:1281); PHYSICS.md §1.2, §5.2", kContactStaticsMethod},
+      with_helix_angle(angle),
+      element_levels("number of edges", std::move(levels), std::move(extended)),
+      nodal_plectoneme_metric_specs(1.5), std::move(gates), run);
   // The ply is posed in units of h (B = 1e12 with C alike passes), so what shapes it is C/B: measured
   // (2026-11-26, about a minute a run) 0.65 .. 100 pass (the default 0.69); at 0.5 and 0.3 the laws or H
   // leave their gates, at 0.007 and 7.7e11 a level runs out of time or fails.

@@ -11,6 +11,7 @@ void register_knot_cases(Registry& registry) {
   knot_cases::add_trefoil_hard_nodal(registry);
   knot_cases::add_trefoil_hard_superhelix(registry);
   knot_cases::add_plectoneme_nodal(registry);
+  knot_cases::add_plectoneme_angles_nodal(registry);
   knot_cases::add_plectoneme_superhelix(registry);
 }
 
