@@ -32,9 +32,9 @@ NodalPly nodal_ply_of(const Parameters& p, double theta0) {
           parameter_value(p, "barrier")};
 }
 
-std::vector<Parameter> nodal_ply_parameters(double barrier_low, double barrier_high) {
+std::vector<Parameter> nodal_ply_parameters(double C, double barrier_low, double barrier_high) {
   return {make_parameter("B", 1.3, 0.0, 1e12, true, false, "force length^2", "bending stiffness EI1 = EI2"),
-          make_parameter("C", 0.9, 0.0, 1e12, true, false, "force length^2", "twisting stiffness GJ"),
+          make_parameter("C", C, 0.0, 1e12, true, false, "force length^2", "twisting stiffness GJ"),
           make_parameter("radius", 0.05, 0.0, 1e6, true, false, "length", "rod radius h (contact at distance 2h)"),
           make_parameter("barrier", 500.0, barrier_low, barrier_high, false, false, "",
                          "barrier stiffness k h^2 / T_ext")};

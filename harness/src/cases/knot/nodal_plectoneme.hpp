@@ -25,9 +25,10 @@ struct NodalPly {
 
 // B, C, radius and barrier from the parameters of both cases; theta0 is the caller's.
 NodalPly nodal_ply_of(const Parameters& p, double theta0);
-// The parameters B, C, radius (any: the ply is posed in units of h, what shapes it is C/B, a window of each
-// case) and barrier in [barrier_low, barrier_high] (measured by each case), default 500.
-std::vector<Parameter> nodal_ply_parameters(double barrier_low, double barrier_high);
+// The parameters B (default 1.3), C (default C), radius (any: the ply is posed in units of h, what shapes it
+// is C/B, a window of each case) and barrier in [barrier_low, barrier_high] (measured by each case), default
+// 500.
+std::vector<Parameter> nodal_ply_parameters(double C, double barrier_low, double barrier_high);
 
 // Lays, relaxes and measures: add_ply_metrics, the 3-D Noether metrics, the contact forces' series and the
 // diagnostics contact_pairs, iterations, equilibrium_residual. SolverError (the method, iterations,

@@ -57,7 +57,7 @@ LevelOutput run(const Parameters& p, double level) {
 // to 5 minutes): at 22 deg N = 200 relaxes off the ply (2 strand segments in contact in its middle) and
 // N = 800 takes 258 s; at 12 deg with barrier 5000 the H deviation's order is 0.80.
 Parameters with_helix_angle(double angle) {
-  Parameters parameters = nodal_ply_parameters(50.0, 2000.0);
+  Parameters parameters = nodal_ply_parameters(0.9, 50.0, 2000.0);
   parameters.insert(parameters.end() - 1, make_parameter("helix_angle", angle, 10.0, 20.0, false, false, "degrees",
                                                          "helix angle of the laid ply; T_ext is the tension law's "
                                                          "at it and R = h"));
