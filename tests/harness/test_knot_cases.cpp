@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "../../harness/src/cases/knot/contact_profile.hpp"
 #include "../../harness/src/cases/knot/nodal_trefoil.hpp"
@@ -95,6 +96,16 @@ TEST(KnotCases, LoosenessStudyPassesAndARelationOffByOnePercentIsRed) {
   const Case& study = named("knot/trefoil-looseness-superhelix");
   const auto result = run_at_default_levels(study);
   EXPECT_TRUE(result.passed()) << failing_gates(result);
+  // Each level's point of the report's figure of the relations over the looseness is its own measurement.
+  for (const auto& level : result.levels) {
+    const auto point = std::find_if(level.series.begin(), level.series.end(), [](const Series& s) {
+      return s.name == "loose-knot relations over the looseness|levels: 1/2 B kappa_B^2 / T where t is "
+                       "perpendicular to the pull";
+    });
+    ASSERT_NE(point, level.series.end()) << level.level;
+    EXPECT_EQ(point->x, std::vector<double>{level.level});
+    EXPECT_EQ(point->y, std::vector<double>{level.metrics.at("perpendicular_ratio").computed});
+  }
   const auto wrong = regated(study, result, [](const Parameters&, auto& metrics) {
     const double ratio = 1.01 * metrics.at("perpendicular_ratio").computed;
     metrics["perpendicular_excess"] = {ratio - 1.0, 0.0, ratio - 1.0, 1.0};

@@ -48,10 +48,26 @@ using namespace cases;
 
 std::size_t elements_at(double looseness) { return std::max<std::size_t>(150, std::size_t(std::ceil(9.0 / looseness))); }
 
+// The loose-knot relations over the looseness: the limit 1 as a line, and this level's three ratios as one
+// point each, labelled "levels: ..." so that the report gathers the points of every level into the figure.
+void add_relation_series(LevelOutput& output, double looseness) {
+  const std::string plot = "loose-knot relations over the looseness|";
+  const auto point = [&](const std::string& label, const std::string& metric) {
+    output.series.push_back({plot + "levels: " + label, "looseness h sqrt(T/B)", "ratio (loose limit: 1)",
+                             {looseness}, {output.metrics.at(metric).computed}});
+  };
+  output.series.push_back({plot + "the loose limit (tension elastica homoclinic, PHYSICS.md §5.1)",
+                           "looseness h sqrt(T/B)", "ratio (loose limit: 1)", {0.0, 0.16}, {1.0, 1.0}});
+  point("1/2 B kappa_B^2 / T where t is perpendicular to the pull", "perpendicular_ratio");
+  point("B kappa_apex^2 / (4 T) at the apex", "apex_ratio");
+  point("end shortening / (4 sqrt(B/T))", "shortening_ratio");
+}
+
 LevelOutput run(const Parameters& p, double looseness) {
   LevelOutput output = relax_superhelix_trefoil(trefoil_knot(p, looseness), elements_at(looseness));
   output.metrics["perpendicular_excess"] = value_sample(output.metrics.at("perpendicular_ratio").computed - 1.0, 1.0);
   output.metrics["elements"] = diagnostic(double(elements_at(looseness)));
+  add_relation_series(output, looseness);
   return output;
 }
 
