@@ -9,6 +9,7 @@
 // dropped): per segment of the root's strand, its closest pair gives R = d / 2 and theta = 1/2 acos(-t1.t2);
 // on the root's tail (its middle) the tension and M_t; H(s) through the rod.
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "../case_builder.hpp"
