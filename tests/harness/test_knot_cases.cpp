@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "../../harness/src/cases/knot/contact_profile.hpp"
 #include "../../harness/src/cases/knot/nodal_trefoil.hpp"
 #include "../../harness/src/cases/knot/plectoneme_tying.hpp"
@@ -27,6 +29,7 @@
 namespace {
 
 using namespace rodvv::harness;
+using rodvv::Mat3;
 using rodvv::Vec3;
 using rodvv::testing::failing_gates;
 using rodvv::testing::regated;
@@ -43,7 +46,7 @@ TEST(KnotCases, TrefoilPassesAtDefaultLevels) {
   const auto result = run_at_default_levels(named("knot/trefoil-nodal"));
   EXPECT_TRUE(result.passed()) << failing_gates(result);
   EXPECT_FALSE(result.gates.empty());
-  EXPECT_EQ(rodvv::testing::case_names_of_family("knot").size(), 10u);
+  EXPECT_EQ(rodvv::testing::case_names_of_family("knot").size(), 11u);
   // The report's contact-force profile beside H(s): zero on the tails, positive in the braid.
   const auto& series = result.levels.back().series;
   const auto profile = std::find_if(series.begin(), series.end(), [](const Series& s) { return s.name == "contact force p(s)"; });
@@ -300,14 +303,23 @@ TEST(PlyLaying, VerticesSitOnTheLaidCurveAndTheEndsAreHeldAsDocumented) {
   // The twist: the tip's material frame is turned by 1.1 rad per length along the rod from the root's
   // transported frame, i.e. its twist about the tangent per edge is 1.1 ebar.
   EXPECT_NEAR(p.start.angle[1] - p.start.angle[0], 1.1 * ebar, 1e-14);
+  // The tip's clamp holds that twist with all its turns (about 2 here): its frame is the reference director's
+  // (angle 0) and its rotation the laid angle, so the start meets the clamp exactly and the statics' end path
+  // has nothing to unwind (a frame with the twist in it and no rotation fixes the angle modulo 2 pi only).
+  const std::size_t n = p.model.elements;
+  EXPECT_GT(p.model.tip.rotation, 4.0 * 3.14159265358979);
+  EXPECT_EQ(p.model.tip.rotation, p.start.angle[n - 1]);
+  const Mat3 turned = Eigen::AngleAxisd(p.model.tip.rotation, p.model.tip.frame.col(0)).toRotationMatrix() *
+                      p.model.tip.frame;
+  EXPECT_LT((turned - rod::material_frame(p.start, n - 1)).cwiseAbs().maxCoeff(), 1e-12);
   EXPECT_THROW(knot::lay_plectoneme({h, 0.8, 1, 1, 1, 0, 1}, 100), rodvv::InputError);  // theta >= pi/4
   EXPECT_THROW(knot::lay_plectoneme({0.0, theta, 1, 1, 1, 0, 1}, 100), rodvv::InputError);
   EXPECT_THROW(knot::pull_laid_ply(laid, std::nan(""), 1.3, 0.9, 3.9, {h, 1}), rodvv::InputError);
 }
 
-// The plectoneme case's coarsest level (N = 200, about 8 s; the case itself runs under `rodvv run` and
+// The plectoneme case's coarsest level (N = 200, about 1 s; the case itself runs under `rodvv run` and
 // ctest): its tension gate, evaluated on that level alone (a bound C h at h = 1/200: 0.027, measured
-// -0.0137), passes; the tension law with the 2 of (1 + 2 / cos 2 theta) halved, at the same measured R and
+// -0.0126), passes; the tension law with the 2 of (1 + 2 / cos 2 theta) halved, at the same measured R and
 // theta, and the right law with a bending stiffness 10 % off (what a solver with a wrong B would be
 // compared with) fail it. (The bound at N = 800, 0.68 % against the measured 0.25 %, sees a stiffness
 // error of 0.5 %.)
@@ -371,6 +383,53 @@ TEST(PlectonemeCases, TheAngleStudyTellsTheTensionLawFromAWrongOneAndAWrongStiff
   const auto stiffer_law = [&](double R, double theta) {
     return ref::plectoneme({1.10 * B, R, theta, 0, 0}).tail_tension;
   };
+  const auto right_law = [&](double R, double theta) { return ref::plectoneme({B, R, theta, 0, 0}).tail_tension; };
+  EXPECT_TRUE(regated(c, right, against(right_law)).passed());  // the edit itself changes nothing
+  EXPECT_FALSE(regated(c, right, against(halved_law)).passed());
+  EXPECT_FALSE(regated(c, right, against(stiffer_law)).passed());
+}
+
+// The ply formed by twisting (knot/plectoneme-twisted-nodal, about 20 s): the rod was turned by the overtwist
+// times Greenhill's buckling rotation 2 sqrt(B T_ext) L / C, computed here apart from the case; the helix angle
+// it chose is the one the tension law gives for T_ext (the law inverted here by bisection, within 0.3 degrees:
+// measured 0.04 .. 0.11); its gates pass, and the tension gates go red against the law with the 2 of
+// (1 + 2 / cos 2 theta) halved and against the right law with B 10 % off.
+TEST(PlectonemeCases, TheTwistFormedPlyChoosesTheTensionLawsAngle) {
+  RODVV_RELEASE_PRESET_ONLY("EveryCase.CoarsestLevelRunsAndGivesFiniteMetrics");
+  namespace ref = rodvv::references;
+  const double pi = 3.14159265358979;
+  const Case& c = named("knot/plectoneme-twisted-nodal");
+  const SweepResult right = run_at_default_levels(c);
+  EXPECT_TRUE(right.passed()) << failing_gates(right);
+  ASSERT_EQ(right.levels.size(), 3u);
+  const auto& p = c.info.parameters;
+  const double B = parameter_value(p, "B"), C = parameter_value(p, "C"), h = parameter_value(p, "radius");
+  const double T = parameter_value(p, "tension") * B / (h * h), L = 300.0 * h;
+  const double turns = parameter_value(p, "overtwist") * 2.0 * std::sqrt(B * T) * L / C / (2.0 * pi);
+  double low = 0.01, high = 0.7;  // theta with ref::plectoneme's tail tension = T (it grows with theta)
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (low + high);
+    (ref::plectoneme({B, h, mid, 0, 0}).tail_tension < T ? low : high) = mid;
+  }
+  for (const auto& level : right.levels) {
+    EXPECT_NEAR(level.metrics.at("end_rotation_turns").computed, turns, 1e-12 * turns) << level.level;
+    EXPECT_NEAR(level.metrics.at("helix_angle").computed, low * 180.0 / pi, 0.3) << level.level;
+    // n . t on the tail is T_ext cos(tilt): the tail leaves the pull's axis by well under 0.04 rad (measured
+    // n . t / T_ext - 1 = -4e-5 at the corners)
+    EXPECT_NEAR(level.metrics.at("tail_tension").computed, T, 1e-3 * T) << level.level;
+  }
+  const auto against = [&](auto law) {
+    return [=](const Parameters&, std::map<std::string, MetricSample>& m) {
+      const double R = m.at("ply_radius").computed * h, theta = m.at("helix_angle").computed * pi / 180.0;
+      const double e = m.at("tail_tension").computed / law(R, theta) - 1.0;
+      m["tension_law"] = {e, 0.0, std::abs(e)};
+    };
+  };
+  const auto halved_law = [&](double R, double theta) {
+    const double s2 = std::sin(theta) * std::sin(theta);
+    return B / (R * R) * 0.5 * s2 * s2 * (1.0 + 1.0 / std::cos(2 * theta));
+  };
+  const auto stiffer_law = [&](double R, double theta) { return ref::plectoneme({1.10 * B, R, theta, 0, 0}).tail_tension; };
   const auto right_law = [&](double R, double theta) { return ref::plectoneme({B, R, theta, 0, 0}).tail_tension; };
   EXPECT_TRUE(regated(c, right, against(right_law)).passed());  // the edit itself changes nothing
   EXPECT_FALSE(regated(c, right, against(halved_law)).passed());

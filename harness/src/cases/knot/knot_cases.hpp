@@ -26,5 +26,6 @@ void add_trefoil_hard_superhelix(Registry& registry);  // the Super-Helix's tref
 void add_plectoneme_nodal(Registry& registry);  // plectoneme with a free end loop, both ends clamped, nodal 3-D rod
 void add_plectoneme_angles_nodal(Registry& registry);  // the nodal ply's laws over the helix angle, 10 .. 25 deg
 void add_plectoneme_superhelix(Registry& registry);  // the same ply on the Super-Helix, tip in a sliding clamp
+void add_plectoneme_twisted_nodal(Registry& registry);  // a ply formed by twisting a straight rod, nodal 3-D rod
 
 }  // namespace rodvv::harness::knot_cases

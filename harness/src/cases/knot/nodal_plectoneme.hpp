@@ -15,6 +15,8 @@
 #include "../case_builder.hpp"
 #include "plectoneme_tying.hpp"
 #include "ply_metrics.hpp"
+#include "rodvv/solvers/rod3d/model.hpp"
+#include "rodvv/solvers/rod3d/statics.hpp"
 
 namespace rodvv::harness::knot_cases {
 
@@ -36,6 +38,12 @@ std::vector<Parameter> nodal_ply_parameters(double C, double barrier_low, double
 // residual) when the relaxation fails or ends off the ply: no self-contact, fewer than 3 strand segments in
 // contact in its middle, or a helix angle there beyond 45 degrees.
 LevelOutput relax_nodal_plectoneme(const NodalPly& ply, const PlyLayout& layout, std::size_t edges);
+
+// Measures a relaxed ply (`result` of the statics on `model`, a rod of bending B and radius h pulled by
+// T_ext) as relax_nodal_plectoneme does, the tails' tension, M_t and H_tail read at the station nearest
+// to arclength `tail_station` on the root's tail.
+LevelOutput measure_nodal_ply(const solvers::rod3d::RodModel& model, const solvers::rod3d::StaticResult& result,
+                              double B, double h, double T_ext, double tail_station);
 
 // The metric specs of relax_nodal_plectoneme's output, H_deviation with the given theoretical order.
 std::vector<MetricSpec> nodal_plectoneme_metric_specs(std::optional<double> H_order);

@@ -9,8 +9,9 @@
 // against 50 nm for bending; Moroz & Nelson 1997, Bryant et al. 2003), the molecule whose plectonemes the
 // law describes. The twist rate that holds the ply is M_t / C, so at C/B = 0.69 (knot/plectoneme-nodal) it is
 // 2.9 times as large: 0.63 / h at 30 degrees, 0.8 rad per edge at N = 200, and there (measured 2026-12-07,
-// N = 100, 141, 200, layouts of 5, 8 and 12 turns) the relaxation came undone at one mesh or more, or
-// converged in 8612 to 23312 iterations with the laws 10 % off; at N = 400 one level took 161 s.
+// N = 200) the ply loosens: theta 30.6 and 37.2 degrees at theta_0 = 30 and 35, the laws 12 % and 36 % off.
+// (Before the tip's clamp held the laid link, plectoneme_tying.hpp, the relaxation at 0.69 came undone at
+// 30 degrees at one mesh or more of N = 100, 141, 200, or took 8612 to 23312 iterations.)
 //
 // The layout follows the angle: a ply of 8 turns (its length 8 x the pitch 2 pi h / tan theta_0, so that
 // its middle, the outer quarters of its contacts dropped, holds 4 turns at every angle), tails of 3.5 elastic
@@ -19,21 +20,25 @@
 // is 9 turns at 25 degrees and only 3.4 at 10; at C/B = 0.69 and N = 200, 25 degrees took 6163 iterations on
 // it against 2941 on 8 turns.)
 //
-// Measured at N = 200 (2026-12-07; H_deviation; the laws of T_ext, T_ext at theta(M_t), M_t, p, n_t; CPU):
-//   10 deg  0.168; 0.022, 0.006, 0.012, 0.028, 0.087;  2.6 s
-//   15 deg  0.199; 0.011, 0.004, 0.005, 0.019, 0.150;  2.4 s
-//   20 deg  0.287; 0.005, 0.006, 0.001, 0.012, 0.120;  7.6 s
-//   25 deg  0.361; 0.008, 0.003, 0.008, 0.003, 0.095;  4.5 s
-//   30 deg  0.416; 0.014, 0.004, 0.015, 0.004, 0.092; 13.1 s
-//   35 deg  0.403; 0.022, 0.009, 0.012, 0.002, 0.106; 16.1 s
-// theta settles 0.1 to 0.3 degrees below theta_0. At 30 and 35 degrees over N = 141, 200, 282: H_deviation
-// 0.60, 0.42, 0.26 and 0.52, 0.40, 0.25 (first order: the contact forces lumped at vertices where the contact
-// set ends, PHYSICS.md §5.1, as knot/plectoneme-nodal measures), the tension law 0.033, 0.014, 0.005 and
-// 0.030, 0.022, 0.046 (the polyline ply's neighbouring equilibria scatter it, knot/plectoneme-nodal); every
-// mesh holds the ply. The strand tension n_t, a difference of nearly equal terms in the ply's balance, is
-// the least resolved (9 to 15 %; knot/plectoneme-nodal converges it at first order).
-// C/B 1.5 and 3 (all six levels hold; largest |values| H 0.368, 0.485; T 0.042, 0.056; T(M_t) 0.014, 0.009;
-// M_t 0.049, 0.044; p 0.077, 0.034; n_t 0.18, 0.18) bound the window.
+// Measured at N = 200 (2026-12-07, the tip's clamp holding the laid link, plectoneme_tying.hpp; H_deviation;
+// the laws of T_ext, T_ext at theta(M_t), M_t, p, n_t; iterations, CPU):
+//   10 deg  0.161; 0.025, 0.009, 0.012, 0.029, 0.183;  331, 1.0 s
+//   15 deg  0.199; 0.011, 0.004, 0.005, 0.019, 0.150;  491, 1.5 s
+//   20 deg  0.282; 0.012, 0.014, 0.002, 0.011, 0.106;  459, 1.5 s
+//   25 deg  0.355; 0.004, 0.014, 0.009, 0.003, 0.096;  483, 1.6 s
+//   30 deg  0.415; 0.012, 0.006, 0.015, 0.004, 0.092;  494, 1.6 s
+//   35 deg  0.393; 0.009, 0.004, 0.011, 0.002, 0.106;  583, 2.0 s
+// theta settles 0.1 to 0.3 degrees below theta_0. (Before the clamp held the laid link the relaxation first
+// unwound its whole turns: 1300 to 3900 iterations, 38 s for the six levels, laws within the same 2.5 %.)
+// At 30 and 35 degrees over N = 141, 200, 282 (before that fix): H_deviation 0.60, 0.42, 0.26 and 0.52, 0.40,
+// 0.25 (first order: the contact forces lumped at vertices where the contact set ends, PHYSICS.md §5.1, as
+// knot/plectoneme-nodal measures), the tension law 0.033, 0.014, 0.005 and 0.030, 0.022, 0.046 (the polyline
+// ply's neighbouring equilibria scatter it, knot/plectoneme-nodal); every mesh holds the ply. The strand
+// tension n_t, a difference of nearly equal terms in the ply's balance, is the least resolved (9 to 18 %;
+// knot/plectoneme-nodal converges it at first order).
+// C/B 1.5 and 3 (all six levels hold; largest |values| H 0.368, 0.480; T 0.034, 0.046; T(M_t) 0.015, 0.011;
+// M_t 0.033, 0.044; p 0.042, 0.034; n_t 0.18, 0.18) bound the window; at C/B = 0.69 the laws are 12 % off
+// at 30 degrees and 36 % at 35, and at 0.5 the 35-degree ply comes undone.
 //
 // Gates at every level: the laws of T_ext, M_t, p and of T_ext at theta(M_t) within a tenth of the quantity
 // (the resolution rodvv asks beside every order, gate.hpp kResolvedFraction), at any parameters; at the
@@ -109,12 +114,6 @@ LevelOutput run(const Parameters& p, double level) {
   return output;
 }
 
-GateSpec resolved_law(const std::string& metric) {
-  return upper_bound_gate(metric, kResolvedFraction, GateScope::AllLevels,
-                          "a tenth of the quantity at every angle (the resolution rodvv asks beside every order, "
-                          "gate.hpp kResolvedFraction)");
-}
-
 // Twice the largest |value| measured over the default levels (2026-12-07, N = 200), at every level.
 GateSpec measured_over_angles(const std::string& metric, double largest) {
   GateSpec gate = upper_bound_gate(metric, 2.0 * largest, GateScope::AllLevels,
@@ -131,12 +130,12 @@ void add_plectoneme_angles_nodal(Registry& registry) {
                               resolved_law("tension_from_moment"),
                               resolved_law("moment_law"),
                               resolved_law("contact_force_law"),
-                              measured_over_angles("H_deviation", 0.416),
-                              measured_over_angles("tension_law", 0.0221),
-                              measured_over_angles("tension_from_moment", 0.0086),
-                              measured_over_angles("moment_law", 0.0147),
-                              measured_over_angles("contact_force_law", 0.0284),
-                              measured_over_angles("strand_tension_law", 0.150)};
+                              measured_over_angles("H_deviation", 0.415),
+                              measured_over_angles("tension_law", 0.0247),
+                              measured_over_angles("tension_from_moment", 0.0145),
+                              measured_over_angles("moment_law", 0.0149),
+                              measured_over_angles("contact_force_law", 0.0288),
+                              measured_over_angles("strand_tension_law", 0.183)};
   Case c = make_case(
       "knot",
       {"knot/plectoneme-angles-nodal",
@@ -155,7 +154,7 @@ void add_plectoneme_angles_nodal(Registry& registry) {
                  ResolutionScale::Count, {10, 15, 20, 25, 30, 35}, {10, 15, 20, 25, 30, 35}, kHighestAngle},
       nodal_plectoneme_metric_specs(std::nullopt), std::move(gates), run);
   require(c, ratio_window("C", "B", 1.5, 3.0, "the twist-to-bending ratios at which every angle was measured to "
-                                             "hold its ply (at 0.69 the relaxation comes undone at 30 degrees)"));
+                                             "hold its ply within the laws (at 0.69 they are 12 % off at 30 degrees)"));
   registry.add(std::move(c));
 }
 

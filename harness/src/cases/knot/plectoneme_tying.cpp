@@ -93,7 +93,13 @@ PulledPly pull_laid_ply(const TiedRod& laid, double twist_rate, double B, double
   model.root.position = 0.5 * (laid.vertices[0] + laid.vertices[1]);
   model.root.frame = rod::material_frame(ply.start, 0);
   model.tip.position = 0.5 * (laid.vertices[n - 1] + laid.vertices[n]);
-  model.tip.frame = rod::material_frame(ply.start, n - 1);
+  // The tip's clamp: the frame of the reference director (angle 0) turned by the laid twist's whole angle,
+  // so that the statics' end path keeps every turn of it (statics.hpp: a held angle is followed turn by turn
+  // from the start's to the model's; a frame alone fixes it modulo 2 pi only).
+  model.tip.frame.col(0) = (laid.vertices[n] - laid.vertices[n - 1]).normalized();
+  model.tip.frame.col(1) = ply.start.reference_director[n - 1];
+  model.tip.frame.col(2) = model.tip.frame.col(0).cross(model.tip.frame.col(1));
+  model.tip.rotation = angles[n - 1];
   return ply;
 }
 

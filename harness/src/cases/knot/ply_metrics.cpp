@@ -67,6 +67,12 @@ GateSpec law_envelope(const std::string& metric, const std::vector<double>& elem
   return gate;
 }
 
+GateSpec resolved_law(const std::string& metric) {
+  return upper_bound_gate(metric, kResolvedFraction, GateScope::AllLevels,
+                          "a tenth of the quantity at every level (the resolution rodvv asks beside every order, "
+                          "gate.hpp kResolvedFraction)");
+}
+
 std::size_t station_nearest(const SpatialRodSolution& solution, double s) {
   std::size_t nearest = 0;
   for (std::size_t i = 0; i < solution.s.size(); ++i)

@@ -38,6 +38,10 @@ std::vector<MetricSpec> ply_metric_specs();
 // at first order (the errors fall, but not monotonically: the ply's contact set changes).
 GateSpec law_envelope(const std::string& metric, const std::vector<double>& elements, const std::vector<double>& errors);
 
+// A law's error within a tenth of the quantity at every level (the resolution rodvv asks beside every
+// order, gate.hpp kResolvedFraction): the gate of the plectoneme cases at any parameters.
+GateSpec resolved_law(const std::string& metric);
+
 // The station nearest to s (the tails' middle, where H_tail, the tension and M_t are read).
 std::size_t station_nearest(const SpatialRodSolution& solution, double s);
 

@@ -13,6 +13,7 @@ void register_knot_cases(Registry& registry) {
   knot_cases::add_plectoneme_nodal(registry);
   knot_cases::add_plectoneme_angles_nodal(registry);
   knot_cases::add_plectoneme_superhelix(registry);
+  knot_cases::add_plectoneme_twisted_nodal(registry);
 }
 
 }  // namespace rodvv::harness
