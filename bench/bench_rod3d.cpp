@@ -19,6 +19,9 @@
 //    the dead pull with self-contact, metrics) at N = 200, 400, 800.
 //  - BM_PlectonemeSuperHelix: the whole knot/plectoneme-superhelix level (laying the twisted Super-Helix on the
 //    ply, its relaxation in the sliding clamp with line self-contact, metrics) at N = 70, 100, 200.
+//  - BM_PlectonemeTwisting: the whole plectoneme continuation, knot/plectoneme-twisted-nodal's level N = 200
+//    (a straight rod twisted past its buckling in 8 steps per turn until the ply forms, relaxed, metrics),
+//    then its level N = 400, which refines the formed ply the case keeps (the refinement and its relaxation).
 // The exponent is the least-squares slope of log(cpu time) against log N of the BM_NewtonIteration rows.
 #include <benchmark/benchmark.h>
 
@@ -131,6 +134,12 @@ void BM_PlectonemeSuperHelix(benchmark::State& bench) {
   for (auto _ : bench) benchmark::DoNotOptimize(c->run_level(c->info.parameters, double(bench.range(0))));
 }
 BENCHMARK(BM_PlectonemeSuperHelix)->Arg(70)->Arg(100)->Arg(200)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+void BM_PlectonemeTwisting(benchmark::State& bench) {
+  const auto* c = rodvv::harness::default_registry().find("knot/plectoneme-twisted-nodal");
+  for (auto _ : bench) benchmark::DoNotOptimize(c->run_level(c->info.parameters, double(bench.range(0))));
+}
+BENCHMARK(BM_PlectonemeTwisting)->Arg(200)->Arg(400)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace
 
