@@ -51,7 +51,6 @@
 #include "ply_metrics.hpp"
 #include "rod_on_curve.hpp"
 #include "rodvv/common/errors.hpp"
-#include "rodvv/common/validation.hpp"
 #include "rodvv/solvers/rod3d/refine.hpp"
 #include "rodvv/solvers/rod3d/self_contact.hpp"
 #include "rodvv/solvers/rod3d/state.hpp"
