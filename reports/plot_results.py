@@ -186,8 +186,37 @@ def error_metrics(case):
     return [m for m in case["info"].get("metrics", []) if m.get("kind") in ("error", "invariant")]
 
 
+def parameter_study_plot(writer, case, stem):
+    """A case whose levels are a physical parameter, not a mesh (resolution scale "parameter"): each
+    error over the level itself, no slopes (an order in a parameter means nothing)."""
+    info = case["info"]
+    resolution = info.get("resolution", {})
+    curves = []
+    for spec in error_metrics(case):
+        points = [(level["level"], level["metrics"][spec["name"]]["error"]) for level in case["levels"]
+                  if finite(level.get("level")) and isinstance(level["metrics"].get(spec["name"]), dict)
+                  and finite(level["metrics"][spec["name"]].get("error"))
+                  and level["metrics"][spec["name"]]["error"] > 0]
+        if points:
+            curves.append((spec, points))
+    if not curves:
+        return None
+    name = resolution.get("name", "level")
+    fig, ax = writer.figure(info["name"], f"{name} (a parameter study, not a mesh)", "error")
+    ax.set_yscale("log")
+    writer.log_axis(ax.yaxis)
+    for index, (spec, points) in enumerate(curves):
+        ax.plot([p[0] for p in points], [p[1] for p in points], "o-", color=f"C{index % 10}", label=spec["name"])
+    ax.legend(fontsize=7, loc="best", framealpha=0.85)
+    file = writer.save(fig, stem)
+    return {"file": file, "caption": f"{info['name']}: each error over {name} (the levels are a parameter "
+                                     f"study: no order is fitted)"}
+
+
 def convergence_plot(writer, case, stem):
     info = case["info"]
+    if info.get("resolution", {}).get("scale") == "parameter":
+        return parameter_study_plot(writer, case, stem)
     levels = case["levels"]
     analyses = {a.get("metric"): a for a in case.get("analyses", []) if isinstance(a, dict)}
     curves = []

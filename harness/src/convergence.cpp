@@ -42,7 +42,8 @@ void extrapolate(const std::string& metric, const std::vector<LevelResult>& leve
 }  // namespace
 
 std::vector<MetricAnalysis> analyse_metrics(const std::vector<MetricSpec>& metrics,
-                                            const std::vector<LevelResult>& levels, std::size_t fit_levels) {
+                                            const std::vector<LevelResult>& levels, std::size_t fit_levels,
+                                            bool fit_orders) {
   std::vector<MetricAnalysis> analyses;
   std::vector<double> h;
   for (const auto& level : levels) h.push_back(level.h);
@@ -50,6 +51,10 @@ std::vector<MetricAnalysis> analyse_metrics(const std::vector<MetricSpec>& metri
     if (metric.kind == MetricKind::Diagnostic) continue;
     MetricAnalysis analysis;
     analysis.metric = metric.name;
+    if (!fit_orders) {
+      analyses.push_back(std::move(analysis));
+      continue;
+    }
     std::vector<std::optional<double>> errors;
     for (const auto& level : levels) {
       const auto found = level.metrics.find(metric.name);
@@ -78,6 +83,10 @@ SweepResult evaluate_convergence(CaseInfo info, std::vector<LevelResult> levels,
       throw InputError("gates", "invalid parameter 'gates': gate '" + gate.name +
                                     "' is a regression gate, which compares with stored goldens (golden.hpp), not "
                                     "evaluated here");
+    if (gate.kind == GateKind::Order && info.resolution.scale == ResolutionScale::Parameter)
+      throw InputError("gates", "invalid parameter 'gates': gate '" + gate.name + "' gates an order, but the levels of " +
+                                    info.name + " are a parameter study (" + info.resolution.name +
+                                    "), not a mesh: no order is fitted");
     if (!find_metric_spec(info, gate.metric))
       throw InputError("gates", "invalid parameter 'gates': gate '" + gate.name + "' is on metric '" + gate.metric +
                                     "', which info.metrics does not declare");
@@ -86,7 +95,8 @@ SweepResult evaluate_convergence(CaseInfo info, std::vector<LevelResult> levels,
   SweepResult result;
   result.info = std::move(info);
   result.levels = std::move(levels);
-  result.analyses = analyse_metrics(result.info.metrics, result.levels, fit_levels);
+  result.analyses = analyse_metrics(result.info.metrics, result.levels, fit_levels,
+                                    result.info.resolution.scale != ResolutionScale::Parameter);
   for (const GateSpec& gate : gates) result.gates.push_back(evaluate_gate(gate, result));
   return result;
 }

@@ -12,6 +12,10 @@ namespace rodvv::harness {
 
 void Registry::add(Case c) {
   if (find(c.info.name)) throw std::logic_error("duplicate case name: " + c.info.name);
+  if (c.info.resolution.scale == ResolutionScale::Parameter)
+    for (const auto& gate : c.gates)
+      if (gate.kind == GateKind::Order)
+        throw std::logic_error("case " + c.info.name + " gates an order, but its levels are a parameter study");
   add_resolution_gates(c.gates);  // every order gate gets its magnitude beside it, at any parameters
   cases_.push_back(std::move(c));
 }

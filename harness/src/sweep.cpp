@@ -41,7 +41,8 @@ bool gates_an_order(const Case& c) {
 }  // namespace
 
 std::vector<MetricAnalysis> analyse_levels(const Case& c, const std::vector<LevelResult>& levels) {
-  return analyse_metrics(c.info.metrics, levels, c.fit_levels);
+  return analyse_metrics(c.info.metrics, levels, c.fit_levels,
+                         c.info.resolution.scale != ResolutionScale::Parameter);
 }
 
 std::span<const double> sweep_levels(const Case& c, bool extended) {
@@ -54,24 +55,24 @@ double finest_level_honoured(const Resolution& resolution) {
   double finest_h = std::numeric_limits<double>::infinity();
   for (const auto* levels : {&resolution.default_levels, &resolution.extended_levels})
     for (double level : *levels) finest_h = std::min(finest_h, resolution.h(level));
-  if (!std::isfinite(finest_h)) return resolution.scale == ResolutionScale::Count ? 1e9 : 0.0;
-  return resolution.scale == ResolutionScale::Count ? 4.0 / finest_h : finest_h / 4.0;
+  if (!std::isfinite(finest_h)) return resolution.increasing() ? 1e9 : 0.0;
+  return resolution.increasing() ? 4.0 / finest_h : finest_h / 4.0;
 }
 
 void validate_levels(const Case& c, std::span<const double> levels) {
   const Resolution& resolution = c.info.resolution;
   if (levels.empty()) throw InputError("levels", "case '" + c.info.name + "': no levels given");
   const double finest = finest_level_honoured(resolution);
-  const bool count = resolution.scale == ResolutionScale::Count;
+  const bool count = resolution.scale == ResolutionScale::Count, increasing = resolution.increasing();
   for (double level : levels) {
     require_positive(resolution.name, level);
     if (count && level != std::floor(level))
       throw InputError(resolution.name, "invalid level " + resolution.name + " = " +
                                             format_value(level) + ": must be a whole number >= 1");
-    if (count ? level > finest : level < finest)
+    if (increasing ? level > finest : level < finest)
       throw InputError(resolution.name,
                        "invalid level " + resolution.name + " = " + format_value(level) + ": case '" + c.info.name +
-                           "' honours " + resolution.name + (count ? " <= " : " >= ") + format_value(finest) +
+                           "' honours " + resolution.name + (increasing ? " <= " : " >= ") + format_value(finest) +
                            " on this machine class (" +
                            (resolution.finest_honoured > 0.0 ? "declared by the case"
                                                              : "four times finer than its finest extended level") +
@@ -81,8 +82,7 @@ void validate_levels(const Case& c, std::span<const double> levels) {
     if (!(resolution.h(levels[i]) < resolution.h(levels[i - 1])))
       throw InputError("levels", "case '" + c.info.name + "': levels must refine strictly from " +
                                      "coarse to fine (" + resolution.name + " " +
-                                     (resolution.scale == ResolutionScale::Count ? "increasing"
-                                                                                 : "decreasing") +
+                                     (resolution.increasing() ? "increasing" : "decreasing") +
                                      "), but " + format_value(levels[i - 1]) + " is followed by " +
                                      format_value(levels[i]));
   if (gates_an_order(c) && levels.size() < c.fit_levels)

@@ -25,6 +25,7 @@ const char* to_string(ResolutionScale scale) {
   switch (scale) {
     case ResolutionScale::StepSize: return "step-size";
     case ResolutionScale::Count: return "count";
+    case ResolutionScale::Parameter: return "parameter";
   }
   return "unknown";
 }

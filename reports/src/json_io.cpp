@@ -286,7 +286,8 @@ constexpr harness::GateKind kGateKinds[] = {
     harness::GateKind::Order, harness::GateKind::UpperBound, harness::GateKind::LowerBound,
     harness::GateKind::Regression};
 constexpr harness::ResolutionScale kScales[] = {harness::ResolutionScale::StepSize,
-                                                harness::ResolutionScale::Count};
+                                                harness::ResolutionScale::Count,
+                                                harness::ResolutionScale::Parameter};
 
 Provenance read_provenance(const Reader& r, const json& j, const std::string& path) {
   Provenance p;

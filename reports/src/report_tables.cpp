@@ -127,7 +127,9 @@ CaseTables case_tables(const harness::SweepResult& result) {
 
   t.orders.header = {"metric", "theoretical", "pairwise orders", "least-squares order", "R\u00B2",
                      "levels used"};
+  // A parameter study has no orders (case_info.hpp: ResolutionScale::Parameter): no table.
   for (const auto& a : result.analyses) {
+    if (info.resolution.scale == harness::ResolutionScale::Parameter) break;
     const auto* spec = find_metric_spec(info, a.metric);
     t.orders.rows.push_back(
         {text(a.metric), num(spec && spec->theoretical_order ? format_order(spec->theoretical_order)

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -97,6 +98,32 @@ TEST(EvaluateConvergence, MalformedStudiesAreInputErrorsNamingTheArgument) {
             "gates");
   EXPECT_EQ(input_error_parameter_of([&] { evaluate_convergence(study_info(), study_levels(2.0), {gate}, 1); }),
             "fit_levels");
+}
+
+// A parameter study (ResolutionScale::Parameter: the levels are a physical parameter, not a mesh): no order is
+// fitted (a slope against 1 / level would mean nothing), a bound gate is evaluated as in any sweep, an order
+// gate is refused, and the registry refuses a case that declares one.
+TEST(EvaluateConvergence, AParameterStudyFitsNoOrderAndRefusesOrderGates) {
+  CaseInfo info = study_info();
+  info.resolution.scale = ResolutionScale::Parameter;
+  const auto bounded = evaluate_convergence(info, study_levels(2.0), {upper_bound_gate("tip", 0.01, GateScope::AllLevels, "")});
+  ASSERT_EQ(bounded.analyses.size(), 1u);
+  EXPECT_FALSE(bounded.analyses[0].order.least_squares.has_value());
+  EXPECT_TRUE(bounded.analyses[0].order.pairwise.empty());
+  EXPECT_FALSE(bounded.analyses[0].richardson.has_value());
+  ASSERT_EQ(bounded.gates.size(), 1u);
+  EXPECT_TRUE(bounded.passed()) << bounded.gates[0].reason;  // 0.3 h^2 (1 + h) <= 0.0053
+  // The same numbers as a mesh study fit the order 2.
+  EXPECT_NEAR(*evaluate_convergence(study_info(), study_levels(2.0), {}).analyses[0].order.least_squares, 2.0, 0.1);
+  EXPECT_EQ(input_error_parameter_of([&] { evaluate_convergence(info, study_levels(2.0), {order_gate("tip", 2.0, "")}); }),
+            "gates");
+  Case c;
+  c.info = info;
+  c.gates = {order_gate("tip", 2.0, "")};
+  Registry registry;
+  EXPECT_THROW(registry.add(c), std::logic_error);
+  c.gates = {upper_bound_gate("tip", 0.01, GateScope::AllLevels, "")};
+  EXPECT_NO_THROW(registry.add(c));
 }
 
 }  // namespace

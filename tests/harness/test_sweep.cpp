@@ -83,6 +83,14 @@ TEST(Sweep, RejectsBadLevels) {
   c.info.resolution.scale = ResolutionScale::Count;
   const std::vector<double> fractional{8, 16.5, 32};
   EXPECT_THROW(validate_levels(c, fractional), rodvv::InputError);
+  // A parameter study's levels increase like a count's but need not be whole (an angle of 12.5 degrees), and
+  // stop at the largest the case honours.
+  c.gates = {};
+  c.info.resolution = {"angle", "degrees", ResolutionScale::Parameter, {10, 20, 30}, {}, 35.0};
+  const std::vector<double> angles{10, 12.5, 30}, decreasing{30, 20, 10}, beyond{10, 20, 40};
+  EXPECT_NO_THROW(validate_levels(c, angles));
+  EXPECT_THROW(validate_levels(c, decreasing), rodvv::InputError);
+  EXPECT_THROW(validate_levels(c, beyond), rodvv::InputError);
 }
 
 // A window on a combination of parameters is both listed (info.parameter_windows, for `list -v`) and

@@ -63,6 +63,15 @@ def law_case():
     return out
 
 
+def parameter_case():
+    """A parameter study: its levels are angles, not meshes."""
+    out = case("demo/angles/study", "demo/angles", 2.0, 1.0)
+    out["info"]["resolution"].update({"name": "angle", "scale": "parameter", "default_levels": [10, 20, 30]})
+    for lvl, angle in zip(out["levels"], (10.0, 20.0, 30.0)):
+        lvl["level"] = angle
+    return out
+
+
 def results():
     return {"schema_version": 1, "merged_from": [], "passed": True,
             "provenance": {"cpu_model": "Test CPU", "host_cores": 2, "build_type": "Release"},
@@ -70,7 +79,7 @@ def results():
                       case("demo/two/reduced", "demo/two", 4.0, 3.0),
                       case("demo/one/alone", "demo/one", 2.0, 1.0),
                       case("demo/cpu/a", "demo/cpu", 2.0, 1.0, cpu=True),
-                      case("demo/cpu/b", "demo/cpu", 2.0, 2.0, cpu=True), law_case()]}
+                      case("demo/cpu/b", "demo/cpu", 2.0, 2.0, cpu=True), law_case(), parameter_case()]}
 
 
 class GroupFigures(unittest.TestCase):
@@ -127,6 +136,34 @@ class GroupFigures(unittest.TestCase):
         self.assertEqual(len(files), 1)
         self.assertIn("the markers: every level", files[0]["caption"])
         self.assertGreater(os.path.getsize(os.path.join(self.tmp.name, files[0]["file"])), 1000)
+
+    def test_a_parameter_study_is_drawn_over_its_levels_without_slopes(self):
+        entry = self.manifest["cases"]["demo/angles/study"][0]
+        self.assertIn("no order is fitted", entry["caption"])
+        self.assertGreater(os.path.getsize(os.path.join(self.tmp.name, entry["file"])), 1000)
+        spec = importlib.util.spec_from_file_location("plot_results", SCRIPT)
+        module = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(module)
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        import matplotlib.ticker as ticker
+        writer = module.PlotWriter(plt, ticker, self.plots)
+        drawn = {}
+
+        def keep(fig, name):
+            drawn["lines"] = {line.get_label(): list(line.get_xdata()) for line in fig.axes[0].get_lines()}
+            drawn["xscale"] = fig.axes[0].get_xscale()
+            plt.close(fig)
+            return name
+
+        writer.save = keep
+        module.convergence_plot(writer, parameter_case(), "angles")
+        self.assertEqual(drawn["lines"]["tip"], [10.0, 20.0, 30.0])  # over the angle, not h = 1 / angle
+        self.assertEqual(drawn["xscale"], "linear")
+        self.assertFalse(any("fit" in label or "slope" in label for label in drawn["lines"]))
+        module.convergence_plot(writer, case("demo/mesh", "demo/mesh", 2.0, 1.0), "mesh")
+        self.assertEqual(drawn["xscale"], "log")  # a mesh study keeps its log-log figure
 
     def test_gathering_takes_each_levels_points_in_order_and_leaves_other_series(self):
         spec = importlib.util.spec_from_file_location("plot_results", SCRIPT)

@@ -23,6 +23,7 @@
 #include "rodvv/reports/junit.hpp"
 #include "rodvv/reports/markdown.hpp"
 #include "rodvv/reports/number_format.hpp"
+#include "rodvv/reports/report_tables.hpp"
 #include "rodvv/reports/plot_manifest.hpp"
 #include "rodvv/reports/provenance.hpp"
 #include "rodvv/reports/report_writer.hpp"
@@ -418,6 +419,19 @@ TEST(ReportsJson, RoundTripKeepsEveryField) {
   for (std::size_t i = 0; i < report.cases.size(); ++i) expect_same(report.cases[i], back.cases[i]);
   // A second trip gives the same text: nothing is lost or reinterpreted.
   EXPECT_EQ(to_json(back).dump(2), text);
+}
+
+// A parameter study's scale travels through the JSON, and its page has no order table (no order is fitted).
+TEST(ReportsJson, AParameterStudyKeepsItsScaleAndHasNoOrderTable) {
+  ValidationReport report = synthetic_report();
+  auto& study = report.cases[1];
+  study.info.resolution.scale = harness::ResolutionScale::Parameter;
+  const json j = to_json(report);
+  EXPECT_EQ(j["cases"][1]["info"]["resolution"]["scale"], "parameter");
+  const ValidationReport back = report_from_json(j, "memory");
+  EXPECT_EQ(back.cases[1].info.resolution.scale, harness::ResolutionScale::Parameter);
+  EXPECT_TRUE(case_tables(study).orders.empty());
+  EXPECT_FALSE(case_tables(report.cases[0]).orders.empty());
 }
 
 TEST(ReportsJson, AbsentOptionalsAreNull) {

@@ -29,7 +29,10 @@ struct Parameter {
 
 // The resolution parameter of a sweep. A StepSize level is the mesh size h itself (dt, a
 // tolerance); a Count level is a number of elements N with h = 1 / N. Orders are fitted in h.
-enum class ResolutionScale { StepSize, Count };
+// A Parameter level is not a resolution but a physical parameter the case studies (a helix angle): its
+// levels increase (h = 1 / level orders them only), no order is fitted or may be gated, and the report
+// draws the metrics over the level itself.
+enum class ResolutionScale { StepSize, Count, Parameter };
 
 struct Resolution {
   std::string name;  // "dt", "N", "tol"
@@ -43,6 +46,8 @@ struct Resolution {
   double finest_honoured = 0.0;
 
   double h(double level) const { return scale == ResolutionScale::StepSize ? level : 1.0 / level; }
+  // Whether the levels grow from coarse to fine (a count, a parameter) or shrink (a step size).
+  bool increasing() const { return scale != ResolutionScale::StepSize; }
 };
 
 // Error: |computed - reference|, a convergence quantity. Invariant: a conservation measure whose

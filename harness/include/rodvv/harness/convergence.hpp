@@ -21,14 +21,18 @@ namespace rodvv::harness {
 
 // One MetricAnalysis per non-diagnostic metric of `metrics`: the observed order of its error over the
 // levels (least squares over the last fit_levels, order_fit.hpp) and, for a metric with `extrapolate`,
-// Richardson/GCI on its computed value at the three finest levels (richardson.hpp).
+// Richardson/GCI on its computed value at the three finest levels (richardson.hpp). With fit_orders
+// false (a parameter study, ResolutionScale::Parameter: its levels are no mesh) neither: the analyses
+// name the metrics only.
 std::vector<MetricAnalysis> analyse_metrics(const std::vector<MetricSpec>& metrics,
-                                            const std::vector<LevelResult>& levels, std::size_t fit_levels = 3);
+                                            const std::vector<LevelResult>& levels, std::size_t fit_levels = 3,
+                                            bool fit_orders = true);
 
 // The analyses and every gate evaluated: a SweepResult a report writer can take as it is. `info` names
 // the study and declares its metrics (info.metrics) and resolution; its parameters are not checked.
 // InputError: no levels, an h not finite and > 0 or not decreasing, fit_levels < 2, a gate on a metric
-// that info.metrics does not declare, a regression gate (it needs stored goldens, golden.hpp).
+// that info.metrics does not declare, a regression gate (it needs stored goldens, golden.hpp), an order
+// gate on a parameter study (ResolutionScale::Parameter: no order is fitted there).
 SweepResult evaluate_convergence(CaseInfo info, std::vector<LevelResult> levels, std::vector<GateSpec> gates,
                                  std::size_t fit_levels = 3);
 

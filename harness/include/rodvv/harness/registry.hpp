@@ -10,7 +10,8 @@ namespace rodvv::harness {
 
 class Registry {
  public:
-  // Throws std::logic_error on a duplicate name (a programming error, not user input).
+  // Throws std::logic_error on a duplicate name or an order gate on a parameter study (programming errors,
+  // not user input).
   void add(Case c);
   const std::vector<Case>& cases() const noexcept { return cases_; }
   const Case* find(std::string_view name) const noexcept;

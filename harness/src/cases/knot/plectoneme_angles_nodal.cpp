@@ -42,7 +42,8 @@
 //
 // Gates at every level: the laws of T_ext, M_t, p and of T_ext at theta(M_t) within a tenth of the quantity
 // (the resolution rodvv asks beside every order, gate.hpp kResolvedFraction), at any parameters; at the
-// defaults each law and H within twice the largest measured over the levels.
+// defaults each law and H within twice the largest measured over the levels. The levels are a parameter
+// study (ResolutionScale::Parameter): no order is fitted or gated.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -151,7 +152,7 @@ void add_plectoneme_angles_nodal(Registry& registry) {
        kContactStaticsMethod},
       nodal_ply_parameters(2.6, 500.0, 500.0),  // C/B = 2; the barrier measured at its default only
       Resolution{"helix_angle", "laid helix angle theta_0 in degrees (T_ext the law's at it), N = 200 edges",
-                 ResolutionScale::Count, {10, 15, 20, 25, 30, 35}, {10, 15, 20, 25, 30, 35}, kHighestAngle},
+                 ResolutionScale::Parameter, {10, 15, 20, 25, 30, 35}, {10, 15, 20, 25, 30, 35}, kHighestAngle},
       nodal_plectoneme_metric_specs(std::nullopt), std::move(gates), run);
   require(c, ratio_window("C", "B", 1.5, 3.0, "the twist-to-bending ratios at which every angle was measured to "
                                              "hold its ply within the laws (at 0.69 they are 12 % off at 30 degrees)"));
