@@ -74,9 +74,9 @@ std::string render_level_table(const harness::SweepResult& result) {
     break;
   }
   if (result.info.resolution.scale == harness::ResolutionScale::Parameter)
-    out += fmt::format("  no orders: the levels ({}) are a parameter study, not a mesh\n", result.info.resolution.name);
+    return out + fmt::format("  no orders: the levels ({}) are a parameter study, not a mesh\n",
+                             result.info.resolution.name);
   for (const auto& analysis : result.analyses) {
-    if (result.info.resolution.scale == harness::ResolutionScale::Parameter) break;
     std::string pairwise;
     for (double p : analysis.order.pairwise) pairwise += (std::isfinite(p) ? fmt::format(" {:.3f}", p) : " n/a");
     out += fmt::format("  order of {:<22} pairwise:{}  least squares {} (R^2 {})\n", analysis.metric,

@@ -139,15 +139,10 @@ Formed form_ply(const TwistedRod& k, std::size_t edges) {
   if (edges == kFormingEdges) return formed;
   PulledPly fine = straight_rod(k, edges);
   const rod::RodState start = rod::refine_state(formed.model, formed.result.state, fine.model);
-  // The tip's clamp where the formed rod has it, every turn counted: the reference director's frame turned by
-  // the refined angle (the refined angle is measured from another reference than the forming's, the
-  // space-parallel transport, which differs from it by the ply's writhe: its value, not the forming's rotation,
-  // is what keeps the link).
-  const std::size_t n = edges;
-  fine.model.tip.frame.col(0) = rod::edge_tangent(start, n - 1);
-  fine.model.tip.frame.col(1) = start.reference_director[n - 1];
-  fine.model.tip.frame.col(2) = fine.model.tip.frame.col(0).cross(start.reference_director[n - 1]);
-  fine.model.tip.rotation = start.angle[n - 1];
+  // The tip's clamp where the formed rod has it, every turn counted. The refined angle is measured from another
+  // reference than the forming's (the space-parallel transport, which differs from it by the ply's writhe):
+  // its value, not the forming's rotation, is what keeps the link.
+  clamp_tip_with_its_turns(fine.model, start);
   formed.model = fine.model;
   formed.result = rod::solve_static(fine.model, start, relaxation_options(edges, 1));
   formed.iterations += formed.result.iterations;
@@ -206,7 +201,7 @@ void add_plectoneme_twisted_nodal(Registry& registry) {
       {"knot/plectoneme-twisted-nodal",
        "Plectoneme formed by twisting a straight rod under tension past its buckling: the ply's laws (nodal rod)",
        "Inextensible isotropic rod (C/B = 2), 300 h long, frictionless barrier self-contact of radius h, straight "
-       "with a 0.02 h bump, root clamped, tip clamped but sliding under the dead pull T_ext and turned by 1.15 times "
+       "and pushed across at its middle by 1e-3 T_ext while it is twisted, root clamped, tip clamped but sliding under the dead pull T_ext and turned by 1.15 times "
        "the buckling rotation 2 sqrt(B T_ext) L / C in 8 continuation steps per turn; formed at N = 200, finer "
        "levels refine it.",
        "T_ext R^2/B = 1/2 sin^4 theta (1 + 2/cos 2 theta), M_t, p, n_t of a free end loop at the measured R, theta; "

@@ -72,6 +72,14 @@ TiedRod lay_plectoneme(const PlyLayout& ply, std::size_t elements) {
   return rod_on_curve(plectoneme_curve(ply), elements, true);
 }
 
+void clamp_tip_with_its_turns(solvers::rod3d::RodModel& model, const solvers::rod3d::RodState& state) {
+  const std::size_t last = state.elements() - 1;
+  model.tip.frame.col(0) = solvers::rod3d::edge_tangent(state, last);
+  model.tip.frame.col(1) = state.reference_director[last];
+  model.tip.frame.col(2) = model.tip.frame.col(0).cross(model.tip.frame.col(1));
+  model.tip.rotation = state.angle[last];
+}
+
 PulledPly pull_laid_ply(const TiedRod& laid, double twist_rate, double B, double C, double tension,
                         const solvers::rod3d::SelfContact& contact) {
   namespace rod = solvers::rod3d;
@@ -93,13 +101,7 @@ PulledPly pull_laid_ply(const TiedRod& laid, double twist_rate, double B, double
   model.root.position = 0.5 * (laid.vertices[0] + laid.vertices[1]);
   model.root.frame = rod::material_frame(ply.start, 0);
   model.tip.position = 0.5 * (laid.vertices[n - 1] + laid.vertices[n]);
-  // The tip's clamp: the frame of the reference director (angle 0) turned by the laid twist's whole angle,
-  // so that the statics' end path keeps every turn of it (statics.hpp: a held angle is followed turn by turn
-  // from the start's to the model's; a frame alone fixes it modulo 2 pi only).
-  model.tip.frame.col(0) = (laid.vertices[n] - laid.vertices[n - 1]).normalized();
-  model.tip.frame.col(1) = ply.start.reference_director[n - 1];
-  model.tip.frame.col(2) = model.tip.frame.col(0).cross(model.tip.frame.col(1));
-  model.tip.rotation = angles[n - 1];
+  clamp_tip_with_its_turns(model, ply.start);  // the laid twist's whole angle
   return ply;
 }
 

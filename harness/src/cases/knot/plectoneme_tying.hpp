@@ -62,6 +62,13 @@ struct PulledPly {
   solvers::rod3d::RodModel model;
   solvers::rod3d::RodState start;
 };
+// Clamps the tip of `model` where `state` has it, every turn counted: the frame of the state's reference
+// director on the last edge (material angle 0), turned by the state's whole material angle there. The statics'
+// end path follows a held angle turn by turn from the start's to the model's (statics.hpp), so a start in this
+// state keeps its link; a clamp given the state's material frame and no rotation fixes the angle modulo 2 pi
+// only, and the first step unwinds the whole turns.
+void clamp_tip_with_its_turns(solvers::rod3d::RodModel& model, const solvers::rod3d::RodState& state);
+
 PulledPly pull_laid_ply(const TiedRod& laid, double twist_rate, double B, double C, double tension,
                         const solvers::rod3d::SelfContact& contact);
 
