@@ -29,8 +29,10 @@
 // then solves the augmented equilibrium (an augmented Lagrangian on the contacts active at r_k: G their
 // normal rows, g their gaps)  (A + rho G^T G) dq = -R_k - rho G^T g + H^T (r - r_k),  whose extra term
 // rho G^T u_N vanishes on every contact that stays closed (the step is Newton's) and at a fixed point; rho
-// the smallest of k_max / ell^2 x 10^j (j = 0 .. 6) that makes the matrix positive definite, else a
-// Levenberg shift sigma diag(K) on top (10^-6 x 10^j): a shorter step until the forces carry the load. Candidates: the Gauss points within
+// the smallest of k_max / ell^2 x 10^j (j = 0 .. 6) that makes the matrix positive definite, else the same
+// with G also holding the tangential rows of the contacts that stick (force strictly inside the cone; g their
+// slips, which stay 0), else a Levenberg shift sigma diag(K) on the first (10^-6 x 10^j): a shorter step until
+// the forces carry the load. Candidates: the Gauss points within
 // `contact_distance` of an obstacle at q_k (others carry no force); a candidate whose gap opens takes off.
 // Converged when the equilibrium residual |R|_inf <= tolerance * scale (scale = max(|K|_inf |q|_inf,
 // |K|_inf / L, |F_ext(q0)|_inf, |J^T f|_inf)) after a step |dq|_inf L <= tolerance (1 + |q|_inf L).
@@ -38,6 +40,7 @@
 // largest diagonal added to every block (a point locked to first order along a straight stretch from the
 // clamp has a singular block) leave equilibrium residuals of ~1e-10; the default tolerance is 1e-9.
 // Reported: the contact law's natural-map residual at the last solve and the largest penetration.
+// The increment is bundle_frictional_statics.hpp's with one strand (one code path for both).
 //
 // Obstacles are convex and the rod stays outside: a half-space (plane), a ball, an infinite cylinder,
 // a right-angled edge (a table's: the quarter-space behind two perpendicular faces, its edge rounded),
@@ -112,6 +115,8 @@ struct FrictionalContact {
 struct FrictionalStaticResult {
   VecX q;
   std::vector<Vec3> points;                 // Gauss points' world positions at q
+  Vec3 root_position = Vec3::Zero();        // the root's placement at q (the model's): with q it places any
+  Mat3 root_frame = Mat3::Identity();       //   material point (a contact foot between strands slides along it)
   std::vector<FrictionalContact> contacts;  // the candidates at the solution (a zero force: open)
   std::size_t iterations = 0;               // Newton iterations
   double residual = 0.0;                    // |R|_inf of the equilibrium, relative to its scale
