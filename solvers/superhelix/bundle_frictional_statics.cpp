@@ -109,14 +109,16 @@ void check_previous(const std::vector<RodModel>& strands, const std::vector<Rigi
   }
 }
 
-// The axis-aligned box of a strand's Gauss points.
+// An axis-aligned box holding a strand's centreline: its Gauss points' box grown by one element length (every
+// point of the centreline is within an element's arc length of its own element's Gauss points).
 std::pair<Vec3, Vec3> bounding_box(const Kinematics& kinematics) {
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const auto& point : kinematics.points()) {
     lo = lo.cwiseMin(point.position);
     hi = hi.cwiseMax(point.position);
   }
-  return {lo, hi};
+  const Vec3 margin = Vec3::Constant(kinematics.element_length());
+  return {lo - margin, hi + margin};
 }
 
 }  // namespace
