@@ -29,7 +29,7 @@ constexpr std::size_t kNoStrand = std::numeric_limits<std::size_t>::max();
 struct Foot {
   std::size_t element = 0;
   double sigma = 0.0;
-  Vec3 position;
+  Vec3 position, tangent;
 };
 
 // A candidate contact at the current iterate: strand's Gauss point `point` against obstacle `obstacle`,
@@ -60,8 +60,8 @@ Foot foot_on(const Kinematics& kinematics, const Vec3& x) {
     foot.element = std::min(std::size_t(arc / ell), kinematics.elements() - 1);
     foot.sigma = arc - ell * double(foot.element);
     foot.position = kinematics.position(foot.element, foot.sigma);
-    const double next =
-        std::clamp(arc + (x - foot.position).dot(kinematics.frame(foot.element, foot.sigma).col(0)), 0.0, L);
+    foot.tangent = kinematics.frame(foot.element, foot.sigma).col(0);
+    const double next = std::clamp(arc + (x - foot.position).dot(foot.tangent), 0.0, L);
     if (std::abs(next - arc) <= 1e-14 * L) break;
     arc = next;
   }
@@ -94,19 +94,16 @@ void check_previous(const std::vector<RodModel>& strands, const std::vector<Rigi
                                        std::to_string(dof_count(model)) + " finite values), one finite Gauss point "
                                        "position per Gauss point (" + std::to_string(points) +
                                        ") and contacts naming existing points and obstacles");
+    if (!p.root_position.allFinite() || !p.root_frame.allFinite() ||
+        !((p.root_frame.transpose() * p.root_frame - Mat3::Identity()).cwiseAbs().maxCoeff() <= 1e-10))
+      throw InputError("previous", "invalid parameter 'previous': strand " + std::to_string(s) +
+                                       " must hold its root's placement (a finite position and a rotation to 1e-10)");
   }
   for (const RodRodContact& c : previous.rod_contacts)
     if (c.strand >= strands.size() || c.point >= strands[c.strand].elements * strands[c.strand].gauss_points ||
         c.other_strand >= strands.size() || c.strand == c.other_strand || !c.local_force.allFinite())
       throw InputError("previous", "invalid parameter 'previous': a rod contact must join an existing Gauss point to "
                                    "another existing strand and carry a finite force");
-  for (std::size_t s = 0; s < strands.size(); ++s) {
-    const FrictionalStaticResult& p = previous.strands[s];
-    if (!p.root_position.allFinite() || !p.root_frame.allFinite() ||
-        !((p.root_frame.transpose() * p.root_frame - Mat3::Identity()).cwiseAbs().maxCoeff() <= 1e-10))
-      throw InputError("previous", "invalid parameter 'previous': strand " + std::to_string(s) +
-                                       " must hold its root's placement (a finite position and a rotation to 1e-10)");
-  }
 }
 
 // An axis-aligned box holding a strand's centreline: its Gauss points' box grown by one element length (every
@@ -236,9 +233,9 @@ BundleFrictionalResult solve_bundle_frictional_increment(const std::vector<RodMo
             proximity.normal = between / d;
             // n turns as x_g moves across b only: along b's tangent t the foot follows (the curvature's share,
             // d kappa, is left out: small for strands in contact)
-            const Vec3 t = kinematics[b].frame(foot.element, foot.sigma).col(0);
-            proximity.normal_gradient =
-                (Mat3::Identity() - proximity.normal * proximity.normal.transpose() - t * t.transpose()) / d;
+            proximity.normal_gradient = (Mat3::Identity() - proximity.normal * proximity.normal.transpose() -
+                                         foot.tangent * foot.tangent.transpose()) /
+                                        d;
             add_candidate({a, g, kNoStrand, b, foot, proximity, {}, {}});
           }
         }
@@ -316,7 +313,7 @@ BundleFrictionalResult solve_bundle_frictional_increment(const std::vector<RodMo
       A.block(offset[s], offset[s], size, size) = static_jacobian(loaded[s], result.strands[s].q);
       // their lever arms (load_stiffness.hpp: the static Jacobian is K - dF/dq)
       if (!foot_loads[s].empty())
-        A.block(offset[s], offset[s], size, size) += -point_load_jacobian(kinematics[s], foot_loads[s]);
+        A.block(offset[s], offset[s], size, size) -= point_load_jacobian(kinematics[s], foot_loads[s]);
     }
     const auto m = Eigen::Index(candidates.size());
     MatX H = MatX::Zero(3 * m, n);
@@ -344,7 +341,7 @@ BundleFrictionalResult solve_bundle_frictional_increment(const std::vector<RodMo
         // (dJ_b/dsigma)^T f_b d sigma*, with (dJ_b/dsigma)^T f_b = Theta^T (t x f_b).
         const auto b = candidate.other_strand;
         const double d = candidate.proximity.gap + law.distance;
-        const Vec3 t = kinematics[b].frame(candidate.foot.element, candidate.foot.sigma).col(0);
+        const Vec3& t = candidate.foot.tangent;
         const Vec3& normal = candidate.proximity.normal;
         MatX Theta = MatX::Zero(3, n);
         Theta.middleCols(offset[b], offset[b + 1] - offset[b]) =

@@ -14,9 +14,12 @@
 // of the two material points, ((x_g - x_g,prev) - (x_b(foot) - x_b,prev(foot))) . (t1, t2), with b's
 // material point placed at the previous equilibrium by its q and root placement. Its Jacobian J_rel =
 // (J_g, -J_b(foot)) over (q_a, q_b) takes J_g's place in H and in the normal's turning term -J_rel^T r_N
-// dn/dx J_rel of A (dn/dx = (I - n n^T) / |x_g - x_b(foot)|), and the lever arm of the force at the foot
-// (point_load_jacobian, load_stiffness.hpp) joins b's block of A as the Gauss points' do; the foot's sliding
-// along b is left out of A (the fixed point, where dq = 0, is the same). The Coulomb
+// dn/dx J_rel of A, with dn/dx = (I - n n^T - t t^T) / |x_g - x_b(foot)| (t b's tangent at the foot, along
+// which the foot follows x_g; the curvature's share, d kappa, is left out). A also holds the rest of the
+// contact's exact tangent: n turning with t as b bends (dn = -t (t x n)^T Theta dq_b, Theta b's rotation
+// Jacobian at the foot), the foot sliding along b with it (moving the reaction's lever arm), and the lever
+// arm of the reaction held at the foot (point_load_jacobian, load_stiffness.hpp), as the Gauss points' are
+// in static_jacobian; checked against finite differences of the residual (5e-10). The Coulomb
 // coefficient is law.mu. Only the points of the lower-numbered strand are tested, so two strands crossing
 // at a steep angle between two Gauss points are not seen: the model is for strands lying along each other
 // (hair, cables in a bundle), as the inverse bundle's contacts. A is dense over all the strands (the
